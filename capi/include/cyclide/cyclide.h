@@ -1,0 +1,249 @@
+/* cyclide: exact rational surfaces made of circles and spheres.
+ *
+ * The stable C ABI. Conventions (SPEC.md "C ABI"):
+ *  - Every call takes an explicit context first; a context is used by one
+ *    thread at a time; read-only handles may be shared between threads.
+ *  - Every function returning int returns a status (cyclide_errors.h);
+ *    CYC_OK is 0. On any error the outputs are left untouched and the
+ *    context's last-error message says what went wrong.
+ *  - A NULL context is reported as CYC_E_NULL_ARGUMENT, never a crash.
+ *  - Handles are opaque; cyc_*_destroy(ctx, NULL) is a no-op.
+ *  - Batches write into caller buffers described by cyc_buffer3.
+ * This header includes only <stddef.h> and compiles as C99 and as C++. */
+#ifndef CYCLIDE_H
+#define CYCLIDE_H
+
+#include <stddef.h>
+
+#include "cyclide/cyclide_errors.h"
+#include "cyclide/cyclide_version.h"
+
+#if defined(_WIN32)
+#if defined(CYCLIDE_BUILDING)
+#define CYC_API __declspec(dllexport)
+#else
+#define CYC_API __declspec(dllimport)
+#endif
+#else
+#define CYC_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------ bounds */
+
+/** Largest degree of an input curve (numerator and weight). */
+#define CYC_MAX_CURVE_DEGREE 15
+/** Largest order K of two-point C^K Hermite interpolation (degree 2K+1). */
+#define CYC_MAX_HERMITE_ORDER 7
+/** Largest degree in u of the coefficients of the circle parameter f. */
+#define CYC_MAX_MOBIUS_DEGREE 15
+/** Size of a context's last-error message buffer, including the NUL. */
+#define CYC_ERROR_MESSAGE_SIZE 1024
+
+/* ------------------------------------------------------------ types */
+
+typedef struct cyc_context cyc_context;
+typedef struct cyc_curve cyc_curve;
+typedef struct cyc_surface cyc_surface;
+
+/** A sphere: center and squared radius (frozen). */
+typedef struct cyc_sphere {
+  double center[3];
+  double radius2;
+} cyc_sphere;
+
+/** A circle: center, unit normal of its plane, squared radius (frozen). */
+typedef struct cyc_circle {
+  double center[3];
+  double normal[3];
+  double radius2;
+} cyc_circle;
+
+/** The circle parameter f(u,v) = (alpha(u) v + beta(u)) / (gamma(u) v +
+ *  delta(u)) with polynomial coefficients in power form, degree <=
+ *  CYC_MAX_MOBIUS_DEGREE (frozen). f = v is alpha = 1, delta = 1, degree 0. */
+typedef struct cyc_mobius {
+  int degree;
+  double alpha[CYC_MAX_MOBIUS_DEGREE + 1];
+  double beta[CYC_MAX_MOBIUS_DEGREE + 1];
+  double gamma[CYC_MAX_MOBIUS_DEGREE + 1];
+  double delta[CYC_MAX_MOBIUS_DEGREE + 1];
+} cyc_mobius;
+
+/** A caller buffer of 3-vectors: vector i is data[i*stride .. i*stride+2].
+ *  capacity counts vectors; stride counts doubles and is >= 3. data = NULL
+ *  means "not wanted". */
+typedef struct cyc_buffer3 {
+  double* data;
+  size_t capacity;
+  size_t stride;
+} cyc_buffer3;
+
+/** Optional custom allocator. alloc must return memory aligned to
+ *  `alignment` (a power of two <= 64) or NULL; free accepts what alloc
+ *  returned. */
+typedef struct cyc_allocator {
+  void* (*alloc)(void* userdata, size_t size, size_t alignment);
+  void (*free)(void* userdata, void* ptr);
+  void* userdata;
+} cyc_allocator;
+
+/** Called on every error with the status and message (the message buffer
+ *  belongs to the context and is valid until its next call). */
+typedef void (*cyc_error_handler)(int status, const char* message, void* userdata);
+
+/* ------------------------------------------------------------ versions */
+
+/** CYC_VERSION_NUMBER of the library actually linked. */
+CYC_API int cyc_version_number(void);
+/** CYC_VERSION_STRING of the library actually linked (static string). */
+CYC_API const char* cyc_version_string(void);
+/** CYC_ABI_VERSION of the library actually linked. */
+CYC_API int cyc_abi_version(void);
+/** Static name of a status code ("CYC_E_DEPENDENT_PLANES"); never NULL. */
+CYC_API const char* cyc_status_name(int status);
+
+/* ------------------------------------------------------------ context */
+
+/** Create a context. allocator may be NULL (malloc/free); it is copied. */
+CYC_API int cyc_context_create(const cyc_allocator* allocator, cyc_context** out);
+/** Destroy a context (NULL: no-op). Handles keep their own allocator copy
+ *  and may be destroyed after their context. */
+CYC_API void cyc_context_destroy(cyc_context* ctx);
+/** The last error message of this context ("" after success); never NULL,
+ *  also for ctx == NULL. */
+CYC_API const char* cyc_context_last_error(const cyc_context* ctx);
+/** The status of the last call on this context (CYC_OK after success). */
+CYC_API int cyc_context_last_status(const cyc_context* ctx);
+/** Install (or with handler = NULL remove) an error callback. */
+CYC_API int cyc_context_set_error_handler(cyc_context* ctx, cyc_error_handler handler,
+                                          void* userdata);
+
+/* ------------------------------------------------------------ curves */
+
+/** Polynomial curve p(u) = sum_k c_k u^k; coeffs holds degree+1 rows
+ *  (x, y, z), row k at coeffs + k*stride (stride >= 3 doubles). */
+CYC_API int cyc_curve_create_polynomial(cyc_context* ctx, int degree, const double* coeffs,
+                                        size_t stride, cyc_curve** out);
+/** Rational curve (x(u), y(u), z(u)) / w(u); coeffs holds degree+1 rows
+ *  (x, y, z, w) in power form, stride >= 4. */
+CYC_API int cyc_curve_create_rational(cyc_context* ctx, int degree, const double* coeffs,
+                                      size_t stride, cyc_curve** out);
+/** Rational Bezier curve over [u0, u1]: degree+1 control points (stride >=
+ *  3) and weights (NULL: all 1). */
+CYC_API int cyc_curve_create_bezier(cyc_context* ctx, int degree, const double* ctrl,
+                                    size_t stride, const double* weights, double u0,
+                                    double u1, cyc_curve** out);
+/** Line p(u) = point + u * direction. */
+CYC_API int cyc_curve_create_line(cyc_context* ctx, const double point[3],
+                                  const double direction[3], cyc_curve** out);
+/** Constant point (PRRS input). */
+CYC_API int cyc_curve_create_point(cyc_context* ctx, const double point[3],
+                                   cyc_curve** out);
+/** Line element: a point with a tangent (PRCS input; its normal plane is the
+ *  constant plane through point orthogonal to tangent). */
+CYC_API int cyc_curve_create_line_element(cyc_context* ctx, const double point[3],
+                                          const double tangent[3], cyc_curve** out);
+/** Two-point C^K Hermite curve of degree 2K+1 on [u0, u1]: start and end
+ *  each hold K+1 rows (p, p', ..., p^(K)) of 3 doubles, K <=
+ *  CYC_MAX_HERMITE_ORDER. */
+CYC_API int cyc_curve_create_hermite(cyc_context* ctx, int order, double u0, double u1,
+                                     const double* start, const double* end,
+                                     cyc_curve** out);
+/** Destroy a curve (NULL: no-op). ctx may be NULL. */
+CYC_API void cyc_curve_destroy(cyc_context* ctx, cyc_curve* curve);
+/** Degree of the curve (max of numerator and weight degrees). */
+CYC_API int cyc_curve_degree(cyc_context* ctx, const cyc_curve* curve, int* degree);
+/** p(u) and its derivatives up to `order` (<= 8): out receives order+1 rows
+ *  of 3 doubles; capacity counts doubles and must be >= 3*(order+1). */
+CYC_API int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, int order,
+                           double* out, size_t capacity);
+
+/* ------------------------------------------------------------ surfaces */
+
+/** Surface kinds reported by cyc_surface_kind. */
+#define CYC_SURFACE_PRCS 1 /* canal surface by PRCS (seed 000 eq. 8-13) */
+#define CYC_SURFACE_PRRS 2 /* ringed surface by PRRS (seed 000 eq. 24-27) */
+
+/** PRCS: the canal surface through p1 and p2 (either may be a line element;
+ *  not a point), x(u,v) of eq. (11) with circle parameter f (NULL: f = v),
+ *  checked on the domain [u0, u1]. Statuses: CYC_E_DEPENDENT_PLANES,
+ *  CYC_E_ZERO_TANGENT, CYC_E_NOT_FINITE, CYC_E_BAD_DOMAIN,
+ *  CYC_E_DEGENERATE_CIRCLE_PARAMETER, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_prcs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
+                            const cyc_mobius* f, double u0, double u1, cyc_surface** out);
+/** PRRS: the ringed surface through p1, p2, p3 (one or two may be points),
+ *  x(u,v) of eq. (27). Adds CYC_E_COLLINEAR_POINTS. */
+CYC_API int cyc_prrs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
+                            const cyc_curve* p3, const cyc_mobius* f, double u0,
+                            double u1, cyc_surface** out);
+/** Destroy a surface (NULL: no-op). ctx may be NULL. */
+CYC_API void cyc_surface_destroy(cyc_context* ctx, cyc_surface* surface);
+/** CYC_SURFACE_PRCS or CYC_SURFACE_PRRS. */
+CYC_API int cyc_surface_kind(cyc_context* ctx, const cyc_surface* surface, int* kind);
+/** The domain [u0, u1] the surface was checked on. */
+CYC_API int cyc_surface_domain(cyc_context* ctx, const cyc_surface* surface, double* u0,
+                               double* u1);
+/** x(u,v) and, where the pointer is not NULL, x_u, x_v and the unit normal
+ *  (canal: (x - s)/r; ringed: x_u x x_v normalized, CYC_E_SINGULAR_POINT
+ *  where it vanishes). Any output may be NULL; allocation-free. */
+CYC_API int cyc_surface_eval(cyc_context* ctx, const cyc_surface* surface, double u,
+                             double v, double point[3], double du[3], double dv[3],
+                             double normal[3]);
+/** Evaluate count parameter pairs uv[i*uv_stride], uv[i*uv_stride+1]
+ *  (uv_stride >= 2). Each wanted buffer needs capacity >= count. Singular
+ *  normals are written as (0,0,0) and counted in *singular (may be NULL).
+ *  All or nothing: on error no buffer is written. Allocation-free. */
+CYC_API int cyc_surface_eval_batch(cyc_context* ctx, const cyc_surface* surface,
+                                   const double* uv, size_t uv_stride, size_t count,
+                                   cyc_buffer3 points, cyc_buffer3 du, cyc_buffer3 dv,
+                                   cyc_buffer3 normals, size_t* singular);
+/** Evaluate the grid (us[i], vs[j]) into index i*nv + j, reusing the circle
+ *  of each u. Singular normals (ringed only) are written as (0,0,0) and
+ *  counted in *singular (may be NULL). All or nothing. Allocation-free. */
+CYC_API int cyc_surface_eval_grid(cyc_context* ctx, const cyc_surface* surface,
+                                  const double* us, size_t nu, const double* vs,
+                                  size_t nv, cyc_buffer3 points, cyc_buffer3 du,
+                                  cyc_buffer3 dv, cyc_buffer3 normals, size_t* singular);
+/** The circle v -> x(u, v). */
+CYC_API int cyc_surface_circle(cyc_context* ctx, const cyc_surface* surface, double u,
+                               cyc_circle* out);
+/** The sphere touching a canal surface along its circle at u: spine point
+ *  s(u) and r^2(u). CYC_E_NOT_CANAL for PRRS surfaces. */
+CYC_API int cyc_surface_sphere(cyc_context* ctx, const cyc_surface* surface, double u,
+                               cyc_sphere* out);
+/** Ringed-surface data at u (eq. (1) for canal surfaces): directrix point
+ *  c(u), normal n(u) (not unit: s' or (p1-p2)x(p1-p3)), rho^2(u), and
+ *  rho rho'(u). Any output may be NULL. */
+CYC_API int cyc_surface_ringed_data(cyc_context* ctx, const cyc_surface* surface,
+                                    double u, double c[3], double n[3], double* rho2,
+                                    double* rho_rho_prime);
+/** The sphere of the family (3) at u: center c + (rho rho'/(n.c')) n and
+ *  its squared radius. CYC_E_DEGENERATE_RINGED where n.c' = 0. */
+CYC_API int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surface,
+                                      double u, cyc_sphere* out);
+/** Canal test (2) over the domain: the largest relative residual
+ *  |[(n.c')c' + rho rho' n'] x n| / scale at the domain samples, and
+ *  *is_canal = (residual <= tolerance); tolerance <= 0 uses 1e-9. */
+CYC_API int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface,
+                                   double tolerance, double* max_residual, int* is_canal);
+/** The v whose point x(u, v) is the point of the circle at u closest to
+ *  `point`; HUGE_VAL when that is the generator (f = infinity). */
+CYC_API int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surface,
+                                     double u, const double point[3], double* v);
+
+/* ------------------------------------------------------------ optimizer */
+
+/** 1 if this build includes the Ceres-based optimizer tier, else 0. The
+ *  cyc_optimize_* entry points of later versions return CYC_E_UNSUPPORTED
+ *  when it is 0. */
+CYC_API int cyc_optimizer_available(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CYCLIDE_H */

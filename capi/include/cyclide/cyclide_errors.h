@@ -1,0 +1,34 @@
+/* cyclide status codes. The numbers are frozen: a code is added, never
+ * renumbered or reused. Ranges: 0 ok; 1-99 invalid input; 100-199
+ * degenerate geometry; 200-299 numerical failure; 300-399 resources;
+ * 400-499 misuse or unsupported. */
+#ifndef CYCLIDE_ERRORS_H
+#define CYCLIDE_ERRORS_H
+
+enum cyc_status {
+  CYC_OK = 0,
+
+  CYC_E_NULL_ARGUMENT = 1,     /* a required pointer is NULL */
+  CYC_E_INVALID_ARGUMENT = 2,  /* a value out of its documented range */
+  CYC_E_NOT_FINITE = 3,        /* NaN, Inf, or |x| > 1e100 in the input */
+  CYC_E_DEGREE_TOO_HIGH = 4,   /* degree above CYC_MAX_CURVE_DEGREE etc. */
+  CYC_E_BAD_DOMAIN = 5,        /* parameter interval empty or reversed */
+
+  CYC_E_DEPENDENT_PLANES = 100,  /* PRCS planes M, N, B (nearly) dependent */
+  CYC_E_ZERO_TANGENT = 101,      /* a PRCS input curve has p'(u) = 0 */
+  CYC_E_COLLINEAR_POINTS = 102,  /* PRRS: p1(u), p2(u), p3(u) collinear */
+  CYC_E_DEGENERATE_CIRCLE_PARAMETER = 103, /* f(u,.) not Mobius at u */
+  CYC_E_NOT_CANAL = 104,         /* canal-only query on a ringed surface */
+  CYC_E_SINGULAR_POINT = 105,    /* normal undefined at this point */
+  CYC_E_DEGENERATE_RINGED = 106, /* eq. (3): n . c' = 0 at u */
+
+  CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
+
+  CYC_E_BUFFER_TOO_SMALL = 300,  /* caller buffer capacity too small */
+  CYC_E_OUT_OF_MEMORY = 301,     /* the allocator returned NULL */
+
+  CYC_E_UNSUPPORTED = 400,       /* feature not built (e.g. no Ceres) */
+  CYC_E_INTERNAL = 401           /* a bug in cyclide: please report */
+};
+
+#endif

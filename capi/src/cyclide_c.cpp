@@ -1,0 +1,700 @@
+// The C ABI over the C++ core. Every entry point runs through one guard
+// (`run`) that checks the context, maps exceptions to statuses, records the
+// last status and message in the context, and calls the error handler.
+// Outputs are written only after everything has succeeded.
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#include "cyclide/cyclide.h"
+#include "cyclide/hermite.hpp"
+#include "cyclide/surface.hpp"
+
+using namespace cyclide;
+
+// ------------------------------------------------------------ handles
+
+struct cyc_context {
+  cyc_allocator allocator;
+  cyc_error_handler handler = nullptr;
+  void* handler_userdata = nullptr;
+  int last_status = CYC_OK;
+  char message[CYC_ERROR_MESSAGE_SIZE] = {0};
+};
+
+struct cyc_curve {
+  cyc_allocator allocator;
+  RationalCurve curve;
+};
+
+struct cyc_surface {
+  cyc_allocator allocator;
+  Surface surface;
+};
+
+// The frozen C numbers equal the core's.
+#define CYC_SAME(c, s) static_assert(int(c) == int(Status::s), #c)
+CYC_SAME(CYC_OK, ok);
+CYC_SAME(CYC_E_NULL_ARGUMENT, null_argument);
+CYC_SAME(CYC_E_INVALID_ARGUMENT, invalid_argument);
+CYC_SAME(CYC_E_NOT_FINITE, not_finite);
+CYC_SAME(CYC_E_DEGREE_TOO_HIGH, degree_too_high);
+CYC_SAME(CYC_E_BAD_DOMAIN, bad_domain);
+CYC_SAME(CYC_E_DEPENDENT_PLANES, dependent_planes);
+CYC_SAME(CYC_E_ZERO_TANGENT, zero_tangent);
+CYC_SAME(CYC_E_COLLINEAR_POINTS, collinear_points);
+CYC_SAME(CYC_E_DEGENERATE_CIRCLE_PARAMETER, degenerate_circle_parameter);
+CYC_SAME(CYC_E_NOT_CANAL, not_canal);
+CYC_SAME(CYC_E_SINGULAR_POINT, singular_point);
+CYC_SAME(CYC_E_DEGENERATE_RINGED, degenerate_ringed);
+CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
+CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
+CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
+CYC_SAME(CYC_E_UNSUPPORTED, unsupported);
+CYC_SAME(CYC_E_INTERNAL, internal_error);
+static_assert(CYC_MAX_CURVE_DEGREE == kMaxCurveDegree, "bound");
+static_assert(CYC_MAX_HERMITE_ORDER == kMaxHermiteOrder, "bound");
+static_assert(CYC_MAX_MOBIUS_DEGREE == kMaxMobiusDegree, "bound");
+
+namespace {
+
+// ------------------------------------------------------------ memory
+
+void* default_alloc(void*, size_t size, size_t alignment) {
+  if (alignment <= alignof(std::max_align_t)) return std::malloc(size);
+  const size_t rounded = (size + alignment - 1) / alignment * alignment;
+  return std::aligned_alloc(alignment, rounded);
+}
+void default_free(void*, void* p) { std::free(p); }
+
+const cyc_allocator kDefaultAllocator = {default_alloc, default_free, nullptr};
+
+template <class H>
+H* allocate(const cyc_allocator& a) {
+  void* mem = a.alloc(a.userdata, sizeof(H), alignof(H));
+  if (!mem) return nullptr;
+  H* h = new (mem) H();
+  h->allocator = a;
+  return h;
+}
+
+template <class H>
+void release(H* h) {
+  if (!h) return;
+  const cyc_allocator a = h->allocator;
+  h->~H();
+  a.free(a.userdata, h);
+}
+
+// ------------------------------------------------------------ errors
+
+// The result of an entry point's body: a status and, on error, a message.
+struct Outcome {
+  int status = CYC_OK;
+  char text[CYC_ERROR_MESSAGE_SIZE] = {0};
+};
+
+Outcome ok() { return {}; }
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+Outcome fail(int status, const char* fmt, ...) {
+  Outcome o;
+  o.status = status;
+  va_list ap;
+  va_start(ap, fmt);
+  std::vsnprintf(o.text, sizeof o.text, fmt, ap);
+  va_end(ap);
+  return o;
+}
+
+// What each core status means, for messages.
+const char* explain(Status s) {
+  switch (s) {
+    case Status::ok: return "ok";
+    case Status::null_argument: return "a required pointer is NULL";
+    case Status::invalid_argument: return "an argument is out of its range";
+    case Status::not_finite: return "an input is NaN, infinite or larger than 1e100";
+    case Status::degree_too_high: return "a degree exceeds its bound";
+    case Status::bad_domain: return "the parameter interval is empty or reversed";
+    case Status::dependent_planes:
+      return "the planes M, N, B are (nearly) dependent (seed 000 Remark 1: e.g. two "
+             "lines of curvature, or parallel normal planes)";
+    case Status::zero_tangent:
+      return "an input curve has a zero tangent, so its normal plane is undefined "
+             "(a constant point is not a PRCS input; use a line element)";
+    case Status::collinear_points: return "the three PRRS points are (nearly) collinear";
+    case Status::degenerate_circle_parameter:
+      return "f(u, .) is not a Mobius map here (alpha delta - beta gamma = 0)";
+    case Status::not_canal: return "the surface is not a canal surface by construction";
+    case Status::singular_point: return "the normal is undefined here (x_u x x_v = 0)";
+    case Status::degenerate_ringed: return "n . c' = 0: the sphere family (3) is undefined";
+    case Status::numerical_overflow:
+      return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
+    case Status::buffer_too_small: return "a buffer is too small";
+    case Status::out_of_memory: return "out of memory";
+    case Status::unsupported: return "not supported by this build";
+    case Status::internal_error: return "internal error";
+  }
+  return "unknown status";
+}
+
+Outcome from_core(const char* fn, Status s) {
+  if (s == Status::ok) return ok();
+  return fail(int(s), "%s: %s", fn, explain(s));
+}
+
+Outcome from_core_at(const char* fn, Status s, double u) {
+  if (s == Status::ok) return ok();
+  return fail(int(s), "%s: %s (at u = %.17g)", fn, explain(s), u);
+}
+
+// The one guard every entry point runs through.
+template <class Body>
+int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
+  if (!ctx) return CYC_E_NULL_ARGUMENT;
+  Outcome o;
+  try {
+    o = body();
+  } catch (const std::bad_alloc&) {
+    o = fail(CYC_E_OUT_OF_MEMORY, "%s: out of memory", fn);
+  } catch (...) {
+    o = fail(CYC_E_INTERNAL, "%s: unexpected exception", fn);
+  }
+  ctx->last_status = o.status;
+  std::memcpy(ctx->message, o.text, sizeof ctx->message);
+  ctx->message[sizeof ctx->message - 1] = '\0';
+  if (o.status != CYC_OK && ctx->handler)
+    ctx->handler(o.status, ctx->message, ctx->handler_userdata);
+  return o.status;
+}
+
+#define REQUIRE(ptr)                                                    \
+  do {                                                                  \
+    if (!(ptr)) return fail(CYC_E_NULL_ARGUMENT, "%s: %s is NULL", fn, #ptr); \
+  } while (0)
+
+Vec3d vec(const double* p) { return Vec3d(p[0], p[1], p[2]); }
+
+void put3(double* dst, const Vec3d& v) {
+  dst[0] = v.x();
+  dst[1] = v.y();
+  dst[2] = v.z();
+}
+
+// Hand a new curve to the caller.
+template <class H, class T>
+Outcome emit(const char* fn, cyc_context* ctx, H** out, const T& value) {
+  H* h = allocate<H>(ctx->allocator);
+  if (!h) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+  if constexpr (std::is_same_v<H, cyc_curve>)
+    h->curve = value;
+  else
+    h->surface = value;
+  *out = h;
+  return ok();
+}
+
+// A caller buffer for n vectors, or a reason why not.
+Outcome check_buffer(const char* fn, const char* name, const cyc_buffer3& b, size_t n) {
+  if (!b.data) return ok();
+  if (b.stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: %s.stride < 3", fn, name);
+  if (b.capacity < n)
+    return fail(CYC_E_BUFFER_TOO_SMALL, "%s: %s holds %zu vectors, %zu needed", fn, name,
+                b.capacity, n);
+  return ok();
+}
+
+Strided3 strided(const cyc_buffer3& b) {
+  Strided3 s;
+  s.data = b.data;
+  s.stride = b.stride;
+  return s;
+}
+
+}  // namespace
+
+// ------------------------------------------------------------ versions
+
+extern "C" {
+
+int cyc_version_number(void) { return CYC_VERSION_NUMBER; }
+const char* cyc_version_string(void) { return CYC_VERSION_STRING; }
+int cyc_abi_version(void) { return CYC_ABI_VERSION; }
+const char* cyc_status_name(int status) {
+  switch (status) {
+    case CYC_OK: case CYC_E_NULL_ARGUMENT: case CYC_E_INVALID_ARGUMENT:
+    case CYC_E_NOT_FINITE: case CYC_E_DEGREE_TOO_HIGH: case CYC_E_BAD_DOMAIN:
+    case CYC_E_DEPENDENT_PLANES: case CYC_E_ZERO_TANGENT: case CYC_E_COLLINEAR_POINTS:
+    case CYC_E_DEGENERATE_CIRCLE_PARAMETER: case CYC_E_NOT_CANAL:
+    case CYC_E_SINGULAR_POINT: case CYC_E_DEGENERATE_RINGED:
+    case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
+    case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
+      return status_name(Status(status));
+    default:
+      return "CYC_E_UNKNOWN";
+  }
+}
+
+// ------------------------------------------------------------ context
+
+int cyc_context_create(const cyc_allocator* allocator, cyc_context** out) {
+  if (!out) return CYC_E_NULL_ARGUMENT;
+  cyc_allocator a = kDefaultAllocator;
+  if (allocator) {
+    if (!allocator->alloc || !allocator->free) return CYC_E_INVALID_ARGUMENT;
+    a = *allocator;
+  }
+  void* mem = a.alloc(a.userdata, sizeof(cyc_context), alignof(cyc_context));
+  if (!mem) return CYC_E_OUT_OF_MEMORY;
+  cyc_context* ctx = new (mem) cyc_context();
+  ctx->allocator = a;
+  *out = ctx;
+  return CYC_OK;
+}
+
+void cyc_context_destroy(cyc_context* ctx) {
+  if (!ctx) return;
+  const cyc_allocator a = ctx->allocator;
+  ctx->~cyc_context();
+  a.free(a.userdata, ctx);
+}
+
+const char* cyc_context_last_error(const cyc_context* ctx) {
+  return ctx ? ctx->message : "cyc_context_last_error: context is NULL";
+}
+
+int cyc_context_last_status(const cyc_context* ctx) {
+  return ctx ? ctx->last_status : CYC_E_NULL_ARGUMENT;
+}
+
+int cyc_context_set_error_handler(cyc_context* ctx, cyc_error_handler handler,
+                                  void* userdata) {
+  const char* fn = "cyc_context_set_error_handler";
+  return run(ctx, fn, [&] {
+    ctx->handler = handler;
+    ctx->handler_userdata = userdata;
+    return ok();
+  });
+}
+
+// ------------------------------------------------------------ curves
+
+int cyc_curve_create_polynomial(cyc_context* ctx, int degree, const double* coeffs,
+                                size_t stride, cyc_curve** out) {
+  const char* fn = "cyc_curve_create_polynomial";
+  return run(ctx, fn, [&] {
+    REQUIRE(coeffs);
+    REQUIRE(out);
+    if (stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < 3", fn);
+    if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
+      return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
+                  "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
+    double packed[3 * (kMaxCurveDegree + 1)];
+    for (int k = 0; k <= degree; ++k)
+      for (int j = 0; j < 3; ++j) packed[3 * k + j] = coeffs[k * stride + j];
+    RationalCurve c;
+    if (Status s = make_polynomial_curve(degree, packed, c); s != Status::ok)
+      return from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+int cyc_curve_create_rational(cyc_context* ctx, int degree, const double* coeffs,
+                              size_t stride, cyc_curve** out) {
+  const char* fn = "cyc_curve_create_rational";
+  return run(ctx, fn, [&] {
+    REQUIRE(coeffs);
+    REQUIRE(out);
+    if (stride < 4) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < 4", fn);
+    if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
+      return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
+                  "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
+    double packed[4 * (kMaxCurveDegree + 1)];
+    for (int k = 0; k <= degree; ++k)
+      for (int j = 0; j < 4; ++j) packed[4 * k + j] = coeffs[k * stride + j];
+    RationalCurve c;
+    if (Status s = make_rational_curve(degree, packed, c); s != Status::ok)
+      return s == Status::invalid_argument
+                 ? fail(int(s), "%s: the weight w(u) is identically zero", fn)
+                 : from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+int cyc_curve_create_bezier(cyc_context* ctx, int degree, const double* ctrl,
+                            size_t stride, const double* weights, double u0, double u1,
+                            cyc_curve** out) {
+  const char* fn = "cyc_curve_create_bezier";
+  return run(ctx, fn, [&] {
+    REQUIRE(ctrl);
+    REQUIRE(out);
+    if (stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < 3", fn);
+    if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
+      return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
+                  "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
+    double packed[3 * (kMaxCurveDegree + 1)];
+    for (int k = 0; k <= degree; ++k)
+      for (int j = 0; j < 3; ++j) packed[3 * k + j] = ctrl[k * stride + j];
+    RationalCurve c;
+    if (Status s = make_bezier_curve(degree, packed, weights, u0, u1, c); s != Status::ok)
+      return s == Status::invalid_argument
+                 ? fail(int(s), "%s: all weights are zero", fn)
+                 : from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+int cyc_curve_create_line(cyc_context* ctx, const double point[3],
+                          const double direction[3], cyc_curve** out) {
+  const char* fn = "cyc_curve_create_line";
+  return run(ctx, fn, [&] {
+    REQUIRE(point);
+    REQUIRE(direction);
+    REQUIRE(out);
+    RationalCurve c;
+    if (Status s = make_line(vec(point), vec(direction), c); s != Status::ok)
+      return s == Status::zero_tangent ? fail(int(s), "%s: direction is zero", fn)
+                                       : from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+int cyc_curve_create_point(cyc_context* ctx, const double point[3], cyc_curve** out) {
+  const char* fn = "cyc_curve_create_point";
+  return run(ctx, fn, [&] {
+    REQUIRE(point);
+    REQUIRE(out);
+    RationalCurve c;
+    if (Status s = make_point(vec(point), c); s != Status::ok) return from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+int cyc_curve_create_line_element(cyc_context* ctx, const double point[3],
+                                  const double tangent[3], cyc_curve** out) {
+  const char* fn = "cyc_curve_create_line_element";
+  return run(ctx, fn, [&] {
+    REQUIRE(point);
+    REQUIRE(tangent);
+    REQUIRE(out);
+    RationalCurve c;
+    if (Status s = make_line_element(vec(point), vec(tangent), c); s != Status::ok)
+      return s == Status::zero_tangent ? fail(int(s), "%s: tangent is zero", fn)
+                                       : from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+int cyc_curve_create_hermite(cyc_context* ctx, int order, double u0, double u1,
+                             const double* start, const double* end, cyc_curve** out) {
+  const char* fn = "cyc_curve_create_hermite";
+  return run(ctx, fn, [&] {
+    REQUIRE(start);
+    REQUIRE(end);
+    REQUIRE(out);
+    if (order < 0 || order > CYC_MAX_HERMITE_ORDER)
+      return fail(order < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
+                  "%s: order %d not in [0, %d]", fn, order, CYC_MAX_HERMITE_ORDER);
+    Vec3d a[kMaxHermiteOrder + 1], b[kMaxHermiteOrder + 1];
+    for (int j = 0; j <= order; ++j) {
+      a[j] = vec(start + 3 * j);
+      b[j] = vec(end + 3 * j);
+    }
+    RationalCurve c;
+    if (Status s = make_hermite_curve(order, u0, u1, a, b, c); s != Status::ok)
+      return from_core(fn, s);
+    return emit(fn, ctx, out, c);
+  });
+}
+
+void cyc_curve_destroy(cyc_context*, cyc_curve* curve) { release(curve); }
+
+int cyc_curve_degree(cyc_context* ctx, const cyc_curve* curve, int* degree) {
+  const char* fn = "cyc_curve_degree";
+  return run(ctx, fn, [&] {
+    REQUIRE(curve);
+    REQUIRE(degree);
+    *degree = curve->curve.degree();
+    return ok();
+  });
+}
+
+int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, int order,
+                   double* out, size_t capacity) {
+  const char* fn = "cyc_curve_eval";
+  constexpr int kMaxOrder = 8;
+  return run(ctx, fn, [&] {
+    REQUIRE(curve);
+    REQUIRE(out);
+    if (order < 0 || order > kMaxOrder)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: order %d not in [0, %d]", fn, order,
+                  kMaxOrder);
+    const size_t need = 3 * size_t(order + 1);
+    if (capacity < need)
+      return fail(CYC_E_BUFFER_TOO_SMALL, "%s: capacity %zu doubles, %zu needed", fn,
+                  capacity, need);
+    if (!input_ok(u)) return from_core(fn, Status::not_finite);
+    const auto P = curve->curve.taylor<kMaxOrder>(u);
+    double tmp[3 * (kMaxOrder + 1)];
+    for (int k = 0; k <= order; ++k)
+      for (int j = 0; j < 3; ++j) {
+        tmp[3 * k + j] = P[j].derivative(k);
+        if (!std::isfinite(tmp[3 * k + j]))
+          return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: not finite at u = %.17g (a pole?)", fn,
+                      u);
+      }
+    std::memcpy(out, tmp, need * sizeof(double));
+    return ok();
+  });
+}
+
+// ------------------------------------------------------------ surfaces
+
+namespace {
+Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
+  if (!f) return ok();
+  if (Status s = make_mobius(f->degree, f->alpha, f->beta, f->gamma, f->delta, m);
+      s != Status::ok)
+    return fail(int(s), "%s: circle parameter f: %s", fn, explain(s));
+  return ok();
+}
+}  // namespace
+
+int cyc_prcs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
+                    const cyc_mobius* f, double u0, double u1, cyc_surface** out) {
+  const char* fn = "cyc_prcs_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(p1);
+    REQUIRE(p2);
+    REQUIRE(out);
+    Mobius m;
+    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+    Surface S;
+    double bad_u = u0;
+    const Status s = make_prcs(p1->curve, p2->curve, f ? &m : nullptr, u0, u1, S, &bad_u);
+    if (s != Status::ok) {
+      if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
+      return from_core_at(fn, s, bad_u);
+    }
+    return emit(fn, ctx, out, S);
+  });
+}
+
+int cyc_prrs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
+                    const cyc_curve* p3, const cyc_mobius* f, double u0, double u1,
+                    cyc_surface** out) {
+  const char* fn = "cyc_prrs_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(p1);
+    REQUIRE(p2);
+    REQUIRE(p3);
+    REQUIRE(out);
+    Mobius m;
+    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+    Surface S;
+    double bad_u = u0;
+    const Status s =
+        make_prrs(p1->curve, p2->curve, p3->curve, f ? &m : nullptr, u0, u1, S, &bad_u);
+    if (s == Status::invalid_argument)
+      return fail(int(s), "%s: inputs must be curves or points, not all points and no line "
+                  "elements", fn);
+    if (s != Status::ok) {
+      if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
+      return from_core_at(fn, s, bad_u);
+    }
+    return emit(fn, ctx, out, S);
+  });
+}
+
+void cyc_surface_destroy(cyc_context*, cyc_surface* surface) { release(surface); }
+
+int cyc_surface_kind(cyc_context* ctx, const cyc_surface* surface, int* kind) {
+  const char* fn = "cyc_surface_kind";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(kind);
+    *kind = int(surface->surface.kind);
+    return ok();
+  });
+}
+
+int cyc_surface_domain(cyc_context* ctx, const cyc_surface* surface, double* u0,
+                       double* u1) {
+  const char* fn = "cyc_surface_domain";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(u0);
+    REQUIRE(u1);
+    *u0 = surface->surface.u0;
+    *u1 = surface->surface.u1;
+    return ok();
+  });
+}
+
+int cyc_surface_eval(cyc_context* ctx, const cyc_surface* surface, double u, double v,
+                     double point[3], double du[3], double dv[3], double normal[3]) {
+  const char* fn = "cyc_surface_eval";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    if (!point && !du && !dv && !normal)
+      return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
+    // Evaluate into locals so that outputs stay untouched on error.
+    double x[3], xu[3], xv[3], n[3];
+    EvalOut o{point ? x : nullptr, du ? xu : nullptr, dv ? xv : nullptr,
+              normal ? n : nullptr};
+    if (Status s = surface->surface.eval(u, v, o); s != Status::ok)
+      return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
+    if (point) std::memcpy(point, x, sizeof x);
+    if (du) std::memcpy(du, xu, sizeof xu);
+    if (dv) std::memcpy(dv, xv, sizeof xv);
+    if (normal) std::memcpy(normal, n, sizeof n);
+    return ok();
+  });
+}
+
+int cyc_surface_eval_batch(cyc_context* ctx, const cyc_surface* surface, const double* uv,
+                           size_t uv_stride, size_t count, cyc_buffer3 points,
+                           cyc_buffer3 du, cyc_buffer3 dv, cyc_buffer3 normals,
+                           size_t* singular) {
+  const char* fn = "cyc_surface_eval_batch";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    if (count) REQUIRE(uv);
+    if (uv_stride < 2) return fail(CYC_E_INVALID_ARGUMENT, "%s: uv_stride < 2", fn);
+    for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
+                           {"du", &du}, {"dv", &dv}, {"normals", &normals}})
+      if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
+    const Status s = surface->surface.eval_batch(uv, uv_stride, count, strided(points),
+                                                 strided(du), strided(dv),
+                                                 strided(normals), singular);
+    return from_core(fn, s);
+  });
+}
+
+int cyc_surface_eval_grid(cyc_context* ctx, const cyc_surface* surface, const double* us,
+                          size_t nu, const double* vs, size_t nv, cyc_buffer3 points,
+                          cyc_buffer3 du, cyc_buffer3 dv, cyc_buffer3 normals,
+                          size_t* singular) {
+  const char* fn = "cyc_surface_eval_grid";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    if (nu) REQUIRE(us);
+    if (nv) REQUIRE(vs);
+    if (nv && nu > SIZE_MAX / nv) return fail(CYC_E_INVALID_ARGUMENT, "%s: nu*nv overflows", fn);
+    const size_t count = nu * nv;
+    for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
+                           {"du", &du}, {"dv", &dv}, {"normals", &normals}})
+      if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
+    const Status s = surface->surface.eval_grid(us, nu, vs, nv, strided(points),
+                                                strided(du), strided(dv),
+                                                strided(normals), singular);
+    return from_core(fn, s);
+  });
+}
+
+int cyc_surface_circle(cyc_context* ctx, const cyc_surface* surface, double u,
+                       cyc_circle* out) {
+  const char* fn = "cyc_surface_circle";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    Vec3d c, n;
+    double r2;
+    if (Status s = surface->surface.circle(u, c, n, r2); s != Status::ok)
+      return from_core_at(fn, s, u);
+    put3(out->center, c);
+    put3(out->normal, n);
+    out->radius2 = r2;
+    return ok();
+  });
+}
+
+int cyc_surface_sphere(cyc_context* ctx, const cyc_surface* surface, double u,
+                       cyc_sphere* out) {
+  const char* fn = "cyc_surface_sphere";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    Vec3d c;
+    double r2;
+    if (Status s = surface->surface.sphere(u, c, r2); s != Status::ok)
+      return from_core_at(fn, s, u);
+    put3(out->center, c);
+    out->radius2 = r2;
+    return ok();
+  });
+}
+
+int cyc_surface_ringed_data(cyc_context* ctx, const cyc_surface* surface, double u,
+                            double c[3], double n[3], double* rho2,
+                            double* rho_rho_prime) {
+  const char* fn = "cyc_surface_ringed_data";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    RingedData R;
+    if (Status s = surface->surface.ringed(u, R); s != Status::ok)
+      return from_core_at(fn, s, u);
+    if (c) put3(c, R.c);
+    if (n) put3(n, R.n);
+    if (rho2) *rho2 = R.rho2;
+    if (rho_rho_prime) *rho_rho_prime = R.rho_rho_prime;
+    return ok();
+  });
+}
+
+int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surface, double u,
+                              cyc_sphere* out) {
+  const char* fn = "cyc_surface_ringed_sphere";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    RingedData R;
+    if (Status s = surface->surface.ringed(u, R); s != Status::ok)
+      return from_core_at(fn, s, u);
+    Vec3d m;
+    double r2;
+    if (Status s = ringed_sphere(R, m, r2); s != Status::ok) return from_core_at(fn, s, u);
+    put3(out->center, m);
+    out->radius2 = r2;
+    return ok();
+  });
+}
+
+int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface, double tolerance,
+                           double* max_residual, int* is_canal) {
+  const char* fn = "cyc_surface_canal_test";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    if (!max_residual && !is_canal)
+      return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
+    if (std::isnan(tolerance)) return from_core(fn, Status::not_finite);
+    double worst = 0;
+    if (Status s = surface->surface.canal_test(worst); s != Status::ok)
+      return from_core(fn, s);
+    const double tol = tolerance > 0 ? tolerance : 1e-9;
+    if (max_residual) *max_residual = worst;
+    if (is_canal) *is_canal = worst <= tol;
+    return ok();
+  });
+}
+
+int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surface, double u,
+                             const double point[3], double* v) {
+  const char* fn = "cyc_surface_parameter_of";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(point);
+    REQUIRE(v);
+    double r;
+    if (Status s = surface->surface.parameter_of(u, vec(point), r); s != Status::ok)
+      return from_core_at(fn, s, u);
+    *v = r;
+    return ok();
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,38 @@
+// cyclide core: named bounds and tolerances (SPEC.md §"Bounds and tolerances").
+#pragma once
+
+#include <cstddef>
+
+namespace cyclide {
+inline namespace v0 {
+
+// Largest degree of an input rational curve (numerator and denominator).
+// Two-point C^K Hermite interpolation has degree 2K+1, so K <= 7 fits.
+constexpr int kMaxCurveDegree = 15;
+
+// Largest degree of a polynomial coefficient of the circle parameter
+// f(u,v) = (alpha(u) v + beta(u)) / (gamma(u) v + delta(u)).
+constexpr int kMaxMobiusDegree = 15;
+
+// Capacity of the exact (symbolic) forms: PRCS with two rational curves of
+// degree d gives a spine with numerator and denominator degree <= 10d - 4
+// (SPEC.md derives it); 10*15 - 4 = 146 <= 160.
+constexpr int kMaxExactDegree = 160;
+
+// Relative determinant below which three planes count as dependent
+// (PRCS M, N, B; PRRS M, B1, B2): |det| / (|r1| |r2| |r3|).
+constexpr double kDependentPlanesTol = 1e-10;
+
+// A tangent (PRCS normal-plane normal) shorter than this, relative to the
+// scale of the input, counts as zero.
+constexpr double kZeroTangentTol = 1e-12;
+
+// Samples of the domain scanned at creation for degenerate parameters.
+constexpr int kDomainSamples = 257;
+
+// Largest finite magnitude accepted for input numbers; larger values are
+// rejected as non-finite input so that products of a few of them stay finite.
+constexpr double kMaxInputMagnitude = 1e100;
+
+}  // namespace v0
+}  // namespace cyclide

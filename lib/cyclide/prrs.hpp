@@ -1,0 +1,58 @@
+// PRRS: Parameterization of Rational Ringed Surfaces (seed 000, §4,
+// eqs. (24)-(27)). Three rational curves (one or two may be points) give the
+// normal n = (p1 - p2) x (p1 - p3), and the directrix c(u) as the
+// intersection of the plane M through the three points with two bisector
+// planes; the surface is the rotation of p1 about n through c
+// (CircleFrame o = c, a = n, p = p1). No derivative of the inputs is needed.
+#pragma once
+
+#include "cyclide/circle_family.hpp"
+#include "cyclide/config.hpp"
+#include "cyclide/curve.hpp"
+#include "cyclide/planes.hpp"
+#include "cyclide/status.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+
+// The planes (24), (25), (26) at u as series of order K:
+//   M: n . X = n . p1,  B1: 2 (p1 - p2) . X = |p1|^2 - |p2|^2,
+//   B2: 2 (p1 - p3) . X = |p1|^2 - |p3|^2.
+template <int K>
+ThreePlanes<Taylor<double, K>> prrs_planes(const RationalCurve& p1,
+                                            const RationalCurve& p2,
+                                            const RationalCurve& p3, double u) {
+  using S = Taylor<double, K>;
+  const auto q1 = p1.taylor<K>(u), q2 = p2.taylor<K>(u), q3 = p3.taylor<K>(u);
+  const Vec3<S> e2 = q1 - q2, e3 = q1 - q3;
+  ThreePlanes<S> T;
+  T.n[0] = e2.cross(e3);
+  T.n[1] = S(2.0) * e2;
+  T.n[2] = S(2.0) * e3;
+  T.b[0] = T.n[0].dot(q1);
+  T.b[1] = q1.dot(q1) - q2.dot(q2);
+  T.b[2] = q1.dot(q1) - q3.dot(q3);
+  return T;
+}
+
+// For these planes det = 4 |n|^2 and the relative determinant is the sine
+// of the angle at p1: small means the three points are (nearly) collinear.
+template <class S>
+Status check_prrs_planes(const ThreePlanes<S>& T) {
+  if (!(relative_determinant(T) > kDependentPlanesTol)) return Status::collinear_points;
+  return Status::ok;
+}
+
+template <int N>
+Status prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
+                  const RationalCurve& p3, double u, CircleFrame<Taylor<double, N>>& F) {
+  const auto T = prrs_planes<N>(p1, p2, p3, u);
+  if (Status st = check_prrs_planes(T); st != Status::ok) return st;
+  F.o = intersect(T);  // directrix c(u)
+  F.a = T.n[0];        // n(u)
+  F.p = p1.taylor<N>(u);
+  return Status::ok;
+}
+
+}  // namespace v0
+}  // namespace cyclide

@@ -1,0 +1,38 @@
+// Status codes of the core. The numbers are frozen: they equal the C ABI's
+// CYC_* codes (capi static_asserts it). New codes are added, never renumbered.
+#pragma once
+
+namespace cyclide {
+inline namespace v0 {
+
+enum class Status : int {
+  ok = 0,
+  // 1..99: invalid input (the caller can fix the call)
+  null_argument = 1,
+  invalid_argument = 2,
+  not_finite = 3,
+  degree_too_high = 4,
+  bad_domain = 5,
+  // 100..199: degenerate geometry named by the papers
+  dependent_planes = 100,   // PRCS/PRRS planes (near) dependent; Remark 1
+  zero_tangent = 101,       // p'(u) = 0: normal plane undefined
+  collinear_points = 102,   // PRRS: p1, p2, p3 collinear
+  degenerate_circle_parameter = 103,  // f(u,.) not a Mobius map (ad-bc = 0)
+  not_canal = 104,          // canal-only query on a non-canal surface
+  singular_point = 105,     // normal undefined (x_u x x_v = 0)
+  degenerate_ringed = 106,  // eq. (3): n . c' = 0, sphere family undefined
+  // 200..299: numerical failure
+  numerical_overflow = 200,
+  // 300..399: resources
+  buffer_too_small = 300,
+  out_of_memory = 301,
+  // 400..499: misuse / unsupported
+  unsupported = 400,
+  internal_error = 401,
+};
+
+// Static name of a status ("CYC_E_DEPENDENT_PLANES"), never NULL.
+const char* status_name(Status s) noexcept;
+
+}  // namespace v0
+}  // namespace cyclide

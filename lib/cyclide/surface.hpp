@@ -1,0 +1,179 @@
+// A circle-family surface: the common representation of every construction.
+// It owns its inputs (curves, circle parameter f, domain) and produces, for
+// each u, a CircleFrame; one evaluator turns frames into points, partial
+// derivatives and unit normals (SPEC.md "Circle-family surface").
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+
+#include "cyclide/circle_family.hpp"
+#include "cyclide/config.hpp"
+#include "cyclide/curve.hpp"
+#include "cyclide/prcs.hpp"
+#include "cyclide/prrs.hpp"
+#include "cyclide/ringed.hpp"
+#include "cyclide/status.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+
+// Largest magnitude a frame value may have; beyond it evaluation reports
+// numerical_overflow instead of risking Inf in the products of up to five
+// frame values that the circle quadratic forms.
+constexpr double kMaxFrameMagnitude = 1e30;
+constexpr double kMinAxisLength = 1e-30;
+
+using MobiusPoly = Poly<double, kMaxMobiusDegree>;
+
+// f(u,v) = (alpha(u) v + beta(u)) / (gamma(u) v + delta(u)); default f = v.
+struct Mobius {
+  MobiusPoly alpha{1.0}, beta{0.0}, gamma{0.0}, delta{1.0};
+};
+
+enum class SurfaceKind : int {
+  prcs = 1,  // canal surface from two curves (or a curve and a line element)
+  prrs = 2,  // ringed surface from three curves (some may be points)
+};
+
+// Caller-owned strided output of 3-vectors: element i at data + i * stride.
+struct Strided3 {
+  double* data = nullptr;
+  std::size_t stride = 3;  // in doubles, >= 3
+  double* at(std::size_t i) const { return data + i * stride; }
+};
+
+// What an evaluation writes (null = not wanted).
+struct EvalOut {
+  double* point = nullptr;
+  double* du = nullptr;
+  double* dv = nullptr;
+  double* normal = nullptr;
+};
+
+// Per-u data the evaluator reuses across a row of a grid.
+struct CircleRow {
+  CircleQuadratic<Taylor<double, 1>> q1;  // with u-derivatives
+  CircleQuadratic<double> q0;             // values only
+  double inv_radius = 0;                  // canal: 1 / r(u)
+};
+
+class Surface {
+ public:
+  SurfaceKind kind = SurfaceKind::prcs;
+  RationalCurve curve[3];
+  int curve_count = 0;
+  Mobius f;
+  double u0 = 0, u1 = 1;       // domain checked at creation
+  double tangent_scale = 1.0;  // PRCS: max |p_i'| over the domain samples
+
+  bool is_canal_by_construction() const { return kind == SurfaceKind::prcs; }
+
+  // The frame at u as series of order N (N = 0: values, N = 1: with d/du).
+  template <int N>
+  Status frame(double u, CircleFrame<Taylor<double, N>>& F) const {
+    const Status st = kind == SurfaceKind::prcs
+                          ? prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F)
+                          : prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
+    if (st != Status::ok) return st;
+    F.alpha = f.alpha.taylor<N>(u);
+    F.beta = f.beta.taylor<N>(u);
+    F.gamma = f.gamma.taylor<N>(u);
+    F.delta = f.delta.taylor<N>(u);
+    // x is invariant under q -> lambda q: scale f's coefficients so that the
+    // largest value is 1 (keeps the circle quadratic away from underflow).
+    const double m = std::max(std::max(std::abs(F.alpha.c[0]), std::abs(F.beta.c[0])),
+                              std::max(std::abs(F.gamma.c[0]), std::abs(F.delta.c[0])));
+    if (!(m > 0) || !(m <= kMaxFrameMagnitude)) return Status::degenerate_circle_parameter;
+    const Taylor<double, N> inv(1.0 / m);
+    F.alpha *= inv;
+    F.beta *= inv;
+    F.gamma *= inv;
+    F.delta *= inv;
+    return check_frame(F);
+  }
+
+  // Circle data at u: center, plane normal (unit), radius^2.
+  Status circle(double u, Vec3d& center, Vec3d& unit_normal, double& radius2) const;
+  // Touching sphere of a canal surface at u: s(u) and r^2(u) (PRCS only).
+  Status sphere(double u, Vec3d& center, double& radius2) const;
+
+  // Row data for u, with or without u-derivatives.
+  Status row(double u, bool with_du, CircleRow& r) const;
+  // Evaluate one point of a row at v; returns singular_point when a ringed
+  // normal is wanted and x_u x x_v vanishes (nothing written then).
+  Status eval_row(const CircleRow& r, double v, const EvalOut& out) const;
+
+  // x(u,v) and optionally x_u, x_v, unit normal. On error nothing is written.
+  Status eval(double u, double v, const EvalOut& out) const;
+
+  // Grid x(us[i], vs[j]) at index i * nv + j. Every u and v is validated
+  // before anything is written. Normals at singular points (ringed surfaces
+  // only) are written as (0,0,0) and counted in *singular (may be null).
+  Status eval_grid(const double* us, std::size_t nu, const double* vs, std::size_t nv,
+                   const Strided3& points, const Strided3& du, const Strided3& dv,
+                   const Strided3& normals, std::size_t* singular) const;
+
+  // Ringed data (c, n, rho^2, rho rho' and c', n') at u: eq. (1) for canal
+  // surfaces (the circle's center, plane normal s' and radius).
+  Status ringed(double u, RingedData& R) const;
+  // Eq. (2) over the domain samples: the largest relative residual.
+  Status canal_test(double& max_residual) const;
+
+  // Arbitrary (u, v) pairs uv[i*uv_stride], uv[i*uv_stride+1]; all or
+  // nothing like eval_grid (every point is computed once to validate, then
+  // again to write), singular normals as in eval_grid.
+  Status eval_batch(const double* uv, std::size_t uv_stride, std::size_t count,
+                    const Strided3& points, const Strided3& du, const Strided3& dv,
+                    const Strided3& normals, std::size_t* singular) const;
+
+  // The v with x(u, v) = the point of the circle at u nearest to X (inverse
+  // of the circle parameterization; v = +inf is returned as HUGE_VAL when X
+  // is the generator p(u) itself, whose f is infinite).
+  Status parameter_of(double u, const Vec3d& X, double& v) const;
+
+ private:
+  template <int N>
+  static Status check_frame(const CircleFrame<Taylor<double, N>>& F);
+};
+
+// Builders: validate, scan the domain [u0,u1] at kDomainSamples parameters
+// for degenerate planes, and fill `out` only on success. f may be null (f=v).
+Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius* f,
+                 double u0, double u1, Surface& out, double* bad_u = nullptr);
+Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
+                 const RationalCurve& p3, const Mobius* f, double u0, double u1,
+                 Surface& out, double* bad_u = nullptr);
+// Mobius coefficients from power-form coefficient arrays of length degree+1.
+Status make_mobius(int degree, const double* alpha, const double* beta,
+                   const double* gamma, const double* delta, Mobius& out);
+
+
+template <int N>
+Status Surface::check_frame(const CircleFrame<Taylor<double, N>>& F) {
+  auto ok = [](const Taylor<double, N>& t) {
+    for (int k = 0; k <= N; ++k)
+      if (!(std::abs(t.c[k]) <= kMaxFrameMagnitude)) return false;  // NaN fails too
+    return true;
+  };
+  for (int j = 0; j < 3; ++j)
+    if (!ok(F.o[j]) || !ok(F.a[j]) || !ok(F.p[j])) return Status::numerical_overflow;
+  if (!ok(F.alpha) || !ok(F.beta) || !ok(F.gamma) || !ok(F.delta))
+    return Status::numerical_overflow;
+  // f(u,.) must be a Mobius map: alpha delta - beta gamma relative to the
+  // largest coefficient squared (the frame is normalized to max = 1).
+  const double al = F.alpha.c[0], be = F.beta.c[0], ga = F.gamma.c[0], de = F.delta.c[0];
+  if (!(std::abs(al * de - be * ga) > 1e-12)) return Status::degenerate_circle_parameter;
+  const Vec3d a(F.a[0].c[0], F.a[1].c[0], F.a[2].c[0]);
+  const Vec3d d(F.p[0].c[0] - F.o[0].c[0], F.p[1].c[0] - F.o[1].c[0],
+                F.p[2].c[0] - F.o[2].c[0]);
+  // a = 0 means the axis is undefined (PRCS: s' = 0, a singular spine point).
+  if (!(a.norm() > 0)) return Status::dependent_planes;
+  if (!(a.norm() >= kMinAxisLength)) return Status::numerical_overflow;
+  // Zero radius: the circle is a point (a singular curve of the surface).
+  if (!(d.norm() > 0)) return Status::singular_point;
+  return Status::ok;
+}
+
+}  // namespace v0
+}  // namespace cyclide

@@ -1,0 +1,425 @@
+#include "cyclide/surface.hpp"
+
+#include <cmath>
+
+namespace cyclide {
+inline namespace v0 {
+
+namespace {
+
+template <int N>
+CircleFrame<double> values(const CircleFrame<Taylor<double, N>>& F) {
+  CircleFrame<double> V;
+  for (int j = 0; j < 3; ++j) {
+    V.o[j] = F.o[j].c[0];
+    V.a[j] = F.a[j].c[0];
+    V.p[j] = F.p[j].c[0];
+  }
+  V.alpha = F.alpha.c[0];
+  V.beta = F.beta.c[0];
+  V.gamma = F.gamma.c[0];
+  V.delta = F.delta.c[0];
+  return V;
+}
+
+CircleQuadratic<double> values(const CircleQuadratic<Taylor<double, 1>>& C) {
+  CircleQuadratic<double> V;
+  for (int j = 0; j < 3; ++j) V.o[j] = C.o[j].c[0];
+  for (int k = 0; k < 3; ++k) {
+    for (int j = 0; j < 3; ++j) V.P[k][j] = C.P[k][j].c[0];
+    V.Q[k] = C.Q[k].c[0];
+  }
+  return V;
+}
+
+bool finite3(const Vec3d& v) {
+  return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+void put(double* dst, const Vec3d& v) {
+  dst[0] = v.x();
+  dst[1] = v.y();
+  dst[2] = v.z();
+}
+
+// Everything one point can produce; `singular` when the ringed normal is
+// undefined. Returns numerical_overflow if any wanted value is not finite.
+struct PointResult {
+  Vec3d x, xu, xv, n;
+  bool singular = false;
+};
+
+// The smallest |x_u x x_v| relative to |x_u| |x_v| that still defines a normal.
+constexpr double kSingularTol = 1e-14;
+
+Status compute_point(const Surface& S, const CircleRow& r, double v, bool want_du,
+                     bool want_dv, bool want_normal, PointResult& out) {
+  const bool need_du = want_du || (want_normal && !S.is_canal_by_construction());
+  const bool need_dv = want_dv || (want_normal && !S.is_canal_by_construction());
+  PointResult R;
+  if (need_du) {
+    Vec3<Taylor<double, 1>> x, xv;
+    circle_point(r.q1, v, x, need_dv ? &xv : nullptr);
+    for (int j = 0; j < 3; ++j) {
+      R.x[j] = x[j].c[0];
+      R.xu[j] = x[j].c[1];
+      if (need_dv) R.xv[j] = xv[j].c[0];
+    }
+  } else {
+    Vec3d xv;
+    circle_point(r.q0, v, R.x, need_dv ? &xv : nullptr);
+    if (need_dv) R.xv = xv;
+  }
+  if (want_normal) {
+    if (S.is_canal_by_construction()) {
+      // Exact unit normal of a canal surface: (x - s) / r (seed 000 §2).
+      R.n = (R.x - r.q0.o) * r.inv_radius;
+    } else {
+      const Vec3d c = R.xu.cross(R.xv);
+      const double len = c.norm();
+      if (!(len > kSingularTol * R.xu.norm() * R.xv.norm()) || !(len > 0)) {
+        R.singular = true;
+        R.n.setZero();
+      } else {
+        R.n = c / len;
+      }
+    }
+  }
+  if (!finite3(R.x) || (want_du && !finite3(R.xu)) || (want_dv && !finite3(R.xv)) ||
+      (want_normal && !finite3(R.n)))
+    return Status::numerical_overflow;
+  out = R;
+  return Status::ok;
+}
+
+void write_point(const PointResult& R, const EvalOut& out) {
+  if (out.point) put(out.point, R.x);
+  if (out.du) put(out.du, R.xu);
+  if (out.dv) put(out.dv, R.xv);
+  if (out.normal) put(out.normal, R.n);
+}
+
+}  // namespace
+
+Status Surface::row(double u, bool with_du, CircleRow& r) const {
+  if (!input_ok(u)) return Status::not_finite;
+  CircleRow R;
+  Vec3d d;
+  if (with_du) {
+    CircleFrame<Taylor<double, 1>> F;
+    if (Status st = frame<1>(u, F); st != Status::ok) return st;
+    R.q1 = circle_quadratic(F);
+    R.q0 = values(R.q1);
+    d = values(F).p - values(F).o;
+  } else {
+    CircleFrame<Taylor<double, 0>> F;
+    if (Status st = frame<0>(u, F); st != Status::ok) return st;
+    const CircleFrame<double> V = values(F);
+    R.q0 = circle_quadratic(V);
+    d = V.p - V.o;
+  }
+  R.inv_radius = 1.0 / d.norm();  // d != 0 is checked by check_frame
+  r = R;
+  return Status::ok;
+}
+
+Status Surface::eval_row(const CircleRow& r, double v, const EvalOut& out) const {
+  if (!input_ok(v)) return Status::not_finite;
+  PointResult R;
+  if (Status st = compute_point(*this, r, v, out.du, out.dv, out.normal, R);
+      st != Status::ok)
+    return st;
+  if (R.singular) return Status::singular_point;
+  write_point(R, out);
+  return Status::ok;
+}
+
+Status Surface::eval(double u, double v, const EvalOut& out) const {
+  if (!input_ok(u) || !input_ok(v)) return Status::not_finite;
+  const bool with_du = out.du || (out.normal && !is_canal_by_construction());
+  CircleRow r;
+  if (Status st = row(u, with_du, r); st != Status::ok) return st;
+  return eval_row(r, v, out);
+}
+
+Status Surface::eval_grid(const double* us, std::size_t nu, const double* vs,
+                          std::size_t nv, const Strided3& points, const Strided3& du,
+                          const Strided3& dv, const Strided3& normals,
+                          std::size_t* singular) const {
+  if ((nu && !us) || (nv && !vs)) return Status::null_argument;
+  for (const Strided3* b : {&points, &du, &dv, &normals})
+    if (b->data && b->stride < 3) return Status::invalid_argument;
+  const bool with_du = du.data || (normals.data && !is_canal_by_construction());
+  // Pass 1: validate every u and v; nothing is written if one fails. The
+  // frame bounds (kMaxFrameMagnitude, kMinAxisLength, normalized f) make
+  // every point of a valid row finite.
+  for (std::size_t j = 0; j < nv; ++j)
+    if (!input_ok(vs[j])) return Status::not_finite;
+  CircleRow r;
+  for (std::size_t i = 0; i < nu; ++i)
+    if (Status st = row(us[i], with_du, r); st != Status::ok) return st;
+  // Pass 2: evaluate row by row, reusing the per-u circle quadratic.
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < nu; ++i) {
+    row(us[i], with_du, r);
+    for (std::size_t j = 0; j < nv; ++j) {
+      const std::size_t k = i * nv + j;
+      PointResult R;
+      if (compute_point(*this, r, vs[j], du.data, dv.data, normals.data, R) != Status::ok)
+        return Status::internal_error;  // excluded by the bounds checked in pass 1
+      count += R.singular;
+      write_point(R, {points.data ? points.at(k) : nullptr, du.data ? du.at(k) : nullptr,
+                      dv.data ? dv.at(k) : nullptr,
+                      normals.data ? normals.at(k) : nullptr});
+    }
+  }
+  if (singular) *singular = count;
+  return Status::ok;
+}
+
+Status Surface::eval_batch(const double* uv, std::size_t uv_stride, std::size_t count,
+                           const Strided3& points, const Strided3& du,
+                           const Strided3& dv, const Strided3& normals,
+                           std::size_t* singular) const {
+  if (count && !uv) return Status::null_argument;
+  if (uv_stride < 2) return Status::invalid_argument;
+  for (const Strided3* b : {&points, &du, &dv, &normals})
+    if (b->data && b->stride < 3) return Status::invalid_argument;
+  const bool with_du = du.data || (normals.data && !is_canal_by_construction());
+  for (int pass = 0; pass < 2; ++pass) {
+    std::size_t count_singular = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const double u = uv[k * uv_stride], v = uv[k * uv_stride + 1];
+      if (!input_ok(v)) return Status::not_finite;
+      CircleRow r;
+      if (Status st = row(u, with_du, r); st != Status::ok) return st;
+      PointResult R;
+      if (Status st = compute_point(*this, r, v, du.data, dv.data, normals.data, R);
+          st != Status::ok)
+        return pass == 0 ? st : Status::internal_error;
+      count_singular += R.singular;
+      if (pass == 1)
+        write_point(R, {points.data ? points.at(k) : nullptr, du.data ? du.at(k) : nullptr,
+                        dv.data ? dv.at(k) : nullptr,
+                        normals.data ? normals.at(k) : nullptr});
+    }
+    if (pass == 1 && singular) *singular = count_singular;
+  }
+  return Status::ok;
+}
+
+Status Surface::circle(double u, Vec3d& center, Vec3d& unit_normal, double& radius2) const {
+  if (!input_ok(u)) return Status::not_finite;
+  CircleFrame<Taylor<double, 0>> F;
+  if (Status st = frame<0>(u, F); st != Status::ok) return st;
+  const CircleGeometry<double> G = circle_geometry(values(F));
+  center = G.center;
+  unit_normal = G.normal.normalized();
+  radius2 = std::max(0.0, G.radius2);
+  return Status::ok;
+}
+
+Status Surface::sphere(double u, Vec3d& center, double& radius2) const {
+  if (!is_canal_by_construction()) return Status::not_canal;
+  if (!input_ok(u)) return Status::not_finite;
+  CircleFrame<Taylor<double, 0>> F;
+  if (Status st = frame<0>(u, F); st != Status::ok) return st;
+  const CircleFrame<double> V = values(F);
+  center = V.o;  // the spine point s(u)
+  radius2 = (V.p - V.o).squaredNorm();
+  return Status::ok;
+}
+
+Status Surface::parameter_of(double u, const Vec3d& X, double& v) const {
+  if (!input_ok(u) || !input_ok(X)) return Status::not_finite;
+  CircleFrame<Taylor<double, 0>> F;
+  if (Status st = frame<0>(u, F); st != Status::ok) return st;
+  const CircleFrame<double> V = values(F);
+  const CircleGeometry<double> G = circle_geometry(V);
+  // Angle theta from the generator p to X about the axis a (right-handed).
+  const Vec3d e1 = (V.p - G.center).normalized();
+  const Vec3d e2 = V.a.normalized().cross(e1);
+  const Vec3d w = X - G.center;
+  const double theta = std::atan2(w.dot(e2), w.dot(e1));
+  // q = W + G a rotates by theta with tan(theta/2) = G |a| / W, so
+  // f = W / G = |a| cos(theta/2) / sin(theta/2) (eq. (13)); invert the Mobius map.
+  const double fn = V.a.norm() * std::cos(theta / 2), fd = std::sin(theta / 2);
+  const double num = V.delta * fn - V.beta * fd;
+  const double den = V.alpha * fd - V.gamma * fn;
+  if (std::abs(den) <= 1e-300 * std::abs(num) || den == 0.0) {
+    v = HUGE_VAL;
+    return Status::ok;
+  }
+  v = num / den;
+  return Status::ok;
+}
+
+Status Surface::ringed(double u, RingedData& R) const {
+  if (!input_ok(u)) return Status::not_finite;
+  CircleFrame<Taylor<double, 1>> F;
+  if (Status st = frame<1>(u, F); st != Status::ok) return st;
+  const RingedData D = ringed_data(F);
+  if (!std::isfinite(D.rho_rho_prime) || !finite3(D.c) || !finite3(D.n) ||
+      !finite3(D.dc) || !finite3(D.dn) || !std::isfinite(D.rho2))
+    return Status::numerical_overflow;
+  R = D;
+  return Status::ok;
+}
+
+Status Surface::canal_test(double& max_residual) const {
+  double worst = 0;
+  for (int k = 0; k < kDomainSamples; ++k) {
+    const double u = u0 + (u1 - u0) * double(k) / double(kDomainSamples - 1);
+    RingedData R;
+    if (Status st = ringed(u, R); st != Status::ok) return st;
+    worst = std::max(worst, canal_residual(R));
+  }
+  max_residual = worst;
+  return Status::ok;
+}
+
+// ---------------------------------------------------------------- builders
+
+namespace {
+
+double domain_sample(double u0, double u1, int k) {
+  return u0 + (u1 - u0) * double(k) / double(kDomainSamples - 1);
+}
+
+Status check_domain(double u0, double u1) {
+  if (!input_ok(u0) || !input_ok(u1)) return Status::not_finite;
+  if (!(u1 > u0)) return Status::bad_domain;
+  return Status::ok;
+}
+
+// Scan the domain: every sample must give a valid frame (and, if asked,
+// the point and partials must be computable).
+Status scan_domain(const Surface& S, double* bad_u) {
+  for (int k = 0; k < kDomainSamples; ++k) {
+    const double u = domain_sample(S.u0, S.u1, k);
+    CircleFrame<Taylor<double, 0>> F;
+    if (Status st = S.frame<0>(u, F); st != Status::ok) {
+      if (bad_u) *bad_u = u;
+      return st;
+    }
+  }
+  return Status::ok;
+}
+
+}  // namespace
+
+Status make_mobius(int degree, const double* alpha, const double* beta,
+                   const double* gamma, const double* delta, Mobius& out) {
+  if (!alpha || !beta || !gamma || !delta) return Status::null_argument;
+  if (degree < 0) return Status::invalid_argument;
+  if (degree > kMaxMobiusDegree) return Status::degree_too_high;
+  Mobius m;
+  const double* src[4] = {alpha, beta, gamma, delta};
+  MobiusPoly* dst[4] = {&m.alpha, &m.beta, &m.gamma, &m.delta};
+  double big = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k <= degree; ++k) {
+      if (!input_ok(src[i][k])) return Status::not_finite;
+      big = std::max(big, std::abs(src[i][k]));
+    }
+  if (!(big > 0)) return Status::degenerate_circle_parameter;
+  for (int i = 0; i < 4; ++i) {
+    double c[kMaxMobiusDegree + 1];
+    for (int k = 0; k <= degree; ++k) c[k] = src[i][k] / big;  // f is homogeneous
+    dst[i]->assign(c, degree);
+    dst[i]->trim();
+  }
+  out = m;
+  return Status::ok;
+}
+
+Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius* f,
+                 double u0, double u1, Surface& out, double* bad_u) {
+  if (Status st = check_domain(u0, u1); st != Status::ok) return st;
+  // ERRATA: a constant point is not a PRCS input (its normal plane is
+  // undefined); a line element is.
+  if (p1.kind == CurveKind::point || p2.kind == CurveKind::point) return Status::zero_tangent;
+  if (p1.kind == CurveKind::line_element && p2.kind == CurveKind::line_element)
+    return Status::dependent_planes;
+  Surface S;
+  S.kind = SurfaceKind::prcs;
+  S.curve[0] = p1;
+  S.curve[1] = p2;
+  S.curve_count = 2;
+  if (f) S.f = *f;
+  S.u0 = u0;
+  S.u1 = u1;
+  // Tangent scale: the largest |p_i'| over the domain samples.
+  double scale = 0;
+  for (int k = 0; k < kDomainSamples; ++k) {
+    const double u = domain_sample(u0, u1, k);
+    for (int i = 0; i < 2; ++i) {
+      const RationalCurve& c = S.curve[i];
+      const double t = c.kind == CurveKind::line_element
+                           ? c.tangent.norm()
+                           : [&] {
+                               const auto P = c.taylor<1>(u);
+                               return Vec3d(P[0].c[1], P[1].c[1], P[2].c[1]).norm();
+                             }();
+      if (std::isfinite(t)) scale = std::max(scale, t);
+    }
+  }
+  if (!(scale > 0)) return Status::zero_tangent;
+  S.tangent_scale = scale;
+  if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  out = S;
+  return Status::ok;
+}
+
+Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
+                 const RationalCurve& p3, const Mobius* f, double u0, double u1,
+                 Surface& out, double* bad_u) {
+  if (Status st = check_domain(u0, u1); st != Status::ok) return st;
+  const RationalCurve* in[3] = {&p1, &p2, &p3};
+  int constants = 0;
+  for (const RationalCurve* c : in) {
+    if (c->kind == CurveKind::line_element) return Status::invalid_argument;
+    constants += c->kind == CurveKind::point || c->degree() == 0;
+  }
+  // Three points give one circle, not a surface.
+  if (constants == 3) return Status::invalid_argument;
+  Surface S;
+  S.kind = SurfaceKind::prrs;
+  S.curve[0] = p1;
+  S.curve[1] = p2;
+  S.curve[2] = p3;
+  S.curve_count = 3;
+  if (f) S.f = *f;
+  S.u0 = u0;
+  S.u1 = u1;
+  if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  out = S;
+  return Status::ok;
+}
+
+const char* status_name(Status s) noexcept {
+  switch (s) {
+    case Status::ok: return "CYC_OK";
+    case Status::null_argument: return "CYC_E_NULL_ARGUMENT";
+    case Status::invalid_argument: return "CYC_E_INVALID_ARGUMENT";
+    case Status::not_finite: return "CYC_E_NOT_FINITE";
+    case Status::degree_too_high: return "CYC_E_DEGREE_TOO_HIGH";
+    case Status::bad_domain: return "CYC_E_BAD_DOMAIN";
+    case Status::dependent_planes: return "CYC_E_DEPENDENT_PLANES";
+    case Status::zero_tangent: return "CYC_E_ZERO_TANGENT";
+    case Status::collinear_points: return "CYC_E_COLLINEAR_POINTS";
+    case Status::degenerate_circle_parameter: return "CYC_E_DEGENERATE_CIRCLE_PARAMETER";
+    case Status::not_canal: return "CYC_E_NOT_CANAL";
+    case Status::singular_point: return "CYC_E_SINGULAR_POINT";
+    case Status::degenerate_ringed: return "CYC_E_DEGENERATE_RINGED";
+    case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
+    case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
+    case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";
+    case Status::unsupported: return "CYC_E_UNSUPPORTED";
+    case Status::internal_error: return "CYC_E_INTERNAL";
+  }
+  return "CYC_E_UNKNOWN";
+}
+
+}  // namespace v0
+}  // namespace cyclide

@@ -1,0 +1,3 @@
+#include <gtest/gtest.h>
+#include "cyclide/surface.hpp"
+TEST(Smoke2, Builds) { SUCCEED(); }

@@ -1,0 +1,3 @@
+#include <gtest/gtest.h>
+TEST(Alloc, Placeholder) {}
+int main(int c, char** v){ testing::InitGoogleTest(&c,v); return RUN_ALL_TESTS(); }
