@@ -19,9 +19,14 @@ enum class CurveKind : int {
   line_element = 2,  // constant point P with a tangent t (PRCS input)
 };
 
+// The polynomials are in the local variable t = (u - origin) / scale:
+// Bezier and Hermite curves put t = -1..1 on their interval, which keeps
+// the power form well conditioned for high degrees (power form about u = 0
+// on [0.5, 1.5] loses 1e-8 at degree 15; the local form keeps ~1e-14).
 struct RationalCurve {
   CurveKind kind = CurveKind::rational;
-  CurvePoly x, y, z, w;  // homogeneous numerator (x, y, z) and weight w
+  CurvePoly x, y, z, w;  // homogeneous numerator (x, y, z) and weight w, in t
+  double origin = 0.0, scale_u = 1.0;  // t = (u - origin) / scale_u
   Vec3d tangent = Vec3d::Zero();  // line elements only
 
   int degree() const;
@@ -32,17 +37,25 @@ struct RationalCurve {
   // element's point has derivative zero; its tangent is separate).
   template <int N, class S>
   Vec3<Taylor<S, N>> taylor(const S& u) const {
-    const Taylor<S, N> W = w.taylor<N>(u);
-    return Vec3<Taylor<S, N>>(x.taylor<N>(u) / W, y.taylor<N>(u) / W,
-                              z.taylor<N>(u) / W);
+    const S t = (u - S(origin)) / S(scale_u);
+    Taylor<S, N> X = x.taylor<N>(t), Y = y.taylor<N>(t), Z = z.taylor<N>(t),
+                 W = w.taylor<N>(t);
+    // d/du = (1/scale_u) d/dt: coefficient k scales by scale_u^-k.
+    S f(1);
+    for (int k = 1; k <= N; ++k) {
+      f = f / S(scale_u);
+      X.c[k] *= f;
+      Y.c[k] *= f;
+      Z.c[k] *= f;
+      W.c[k] *= f;
+    }
+    return Vec3<Taylor<S, N>>(X / W, Y / W, Z / W);
   }
   Vec3d point(double u) const {
-    const double W = w(u);
-    return Vec3d(x(u) / W, y(u) / W, z(u) / W);
+    const double t = (u - origin) / scale_u;
+    const double W = w(t);
+    return Vec3d(x(t) / W, y(t) / W, z(t) / W);
   }
-  // Largest |coefficient| of the numerators divided by |weight| coefficients:
-  // the length scale for relative tolerances.
-  double scale() const;
 };
 
 // Constructors validate (finite, |values| <= kMaxInputMagnitude, degree

@@ -9,14 +9,6 @@ int RationalCurve::degree() const {
   return std::max({x.deg, y.deg, z.deg, w.deg});
 }
 
-double RationalCurve::scale() const {
-  double m = 0, wm = 0;
-  for (const CurvePoly* p : {&x, &y, &z})
-    for (int k = 0; k <= p->deg; ++k) m = std::max(m, std::abs(p->c[k]));
-  for (int k = 0; k <= w.deg; ++k) wm = std::max(wm, std::abs(w.c[k]));
-  return wm > 0 ? m / wm : 0.0;
-}
-
 namespace {
 
 bool all_ok(const double* v, int n) {
@@ -90,10 +82,13 @@ Status make_bezier_curve(int degree, const double* ctrl, const double* weights,
   }
   RationalCurve c;
   CurvePoly* polys[4] = {&c.x, &c.y, &c.z, &c.w};
+  // Power form in the local t in [-1, 1] (see RationalCurve).
   for (int j = 0; j < 4; ++j) {
-    from_bernstein(b[j], degree, u0, u1, *polys[j]);
+    from_bernstein(b[j], degree, -1.0, 1.0, *polys[j]);
     polys[j]->trim_relative(1e-15);
   }
+  c.origin = 0.5 * (u0 + u1);
+  c.scale_u = 0.5 * (u1 - u0);
   if (c.w.is_zero()) return Status::invalid_argument;
   out = c;
   return Status::ok;

@@ -1,0 +1,191 @@
+#include "cyclide/exact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cyclide {
+inline namespace v0 {
+
+namespace {
+
+// Polynomial arithmetic that remembers whether a degree bound was exceeded.
+struct Algebra {
+  bool overflow = false;
+
+  // A curve polynomial in t = (u - origin)/scale as a polynomial in u:
+  // scale coefficient k by scale^-k, then shift by -origin.
+  ExactPoly lift(const CurvePoly& p, double origin, double scale) {
+    ExactPoly r;
+    r.assign(p);
+    double f = 1;
+    for (int k = 0; k <= r.deg; ++k, f /= scale) r.c[k] *= f;
+    for (int i = 0; i < r.deg; ++i)
+      for (int j = r.deg - 1; j >= i; --j) r.c[j] = r.c[j] - origin * r.c[j + 1];
+    return r;
+  }
+  ExactPoly mul(const ExactPoly& a, const ExactPoly& b) {
+    ExactPoly r;
+    if (!multiply(a, b, r)) overflow = true;
+    return r;
+  }
+  struct V {
+    ExactPoly c[3];
+  };
+  V vec(const ExactPoly& x, const ExactPoly& y, const ExactPoly& z) { return {{x, y, z}}; }
+  V add(const V& a, const V& b) { return {{a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2]}}; }
+  V sub(const V& a, const V& b) { return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]}}; }
+  V scale(const ExactPoly& s, const V& a) {
+    return {{mul(s, a.c[0]), mul(s, a.c[1]), mul(s, a.c[2])}};
+  }
+  ExactPoly dot(const V& a, const V& b) {
+    return mul(a.c[0], b.c[0]) + mul(a.c[1], b.c[1]) + mul(a.c[2], b.c[2]);
+  }
+  V cross(const V& a, const V& b) {
+    return {{mul(a.c[1], b.c[2]) - mul(a.c[2], b.c[1]), mul(a.c[2], b.c[0]) - mul(a.c[0], b.c[2]),
+             mul(a.c[0], b.c[1]) - mul(a.c[1], b.c[0])}};
+  }
+  V derivative(const V& a) {
+    return {{a.c[0].derivative(), a.c[1].derivative(), a.c[2].derivative()}};
+  }
+  // Cramer's rule for n_i . X = b_i: X = num / det.
+  void cramer(const V n[3], const ExactPoly b[3], V& num, ExactPoly& det) {
+    const V c23 = cross(n[1], n[2]), c31 = cross(n[2], n[0]), c12 = cross(n[0], n[1]);
+    det = dot(n[0], c23);
+    num = add(add(scale(b[0], c23), scale(b[1], c31)), scale(b[2], c12));
+  }
+};
+
+ExactVec3 to_exact(const Algebra::V& v, const ExactPoly& w) {
+  ExactVec3 e;
+  e.x = v.c[0];
+  e.y = v.c[1];
+  e.z = v.c[2];
+  e.w = w;
+  for (ExactPoly* p : {&e.x, &e.y, &e.z, &e.w}) p->trim_relative(1e-14);
+  return e;
+}
+
+// Homogeneous curve data: numerator P, weight w.
+struct Hom {
+  Algebra::V P;
+  ExactPoly w;
+};
+
+Hom homogeneous(Algebra& A, const RationalCurve& c) {
+  const double o = c.origin, s = c.scale_u;
+  return {A.vec(A.lift(c.x, o, s), A.lift(c.y, o, s), A.lift(c.z, o, s)), A.lift(c.w, o, s)};
+}
+
+// |P1/w1 - N/D|^2 as num/den: |P1 D - N w1|^2 / (w1 D)^2.
+void squared_distance(Algebra& A, const Hom& p, const Algebra::V& N, const ExactPoly& D,
+                      ExactPoly& num, ExactPoly& den) {
+  const Algebra::V diff = A.sub(A.scale(D, p.P), A.scale(p.w, N));
+  num = A.dot(diff, diff);
+  const ExactPoly wd = A.mul(p.w, D);
+  den = A.mul(wd, wd);
+  num.trim_relative(1e-14);
+  den.trim_relative(1e-14);
+}
+
+// Row of a PRCS normal plane, multiplied by w: (w T | T . P) with
+// T = P' w - P w' (parallel to p'); a line element gives (t | t . P).
+void normal_plane_row(Algebra& A, const RationalCurve& c, const Hom& h, Algebra::V& n,
+                      ExactPoly& b) {
+  if (c.kind == CurveKind::line_element) {
+    n = A.vec(ExactPoly(c.tangent.x()), ExactPoly(c.tangent.y()), ExactPoly(c.tangent.z()));
+    b = A.dot(n, h.P);  // w = 1 for a line element
+    return;
+  }
+  const Algebra::V T = A.sub(A.scale(h.w, A.derivative(h.P)), A.scale(h.w.derivative(), h.P));
+  n = A.scale(h.w, T);
+  b = A.dot(T, h.P);
+}
+
+}  // namespace
+
+Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactFrame& out) {
+  Algebra A;
+  const Hom h1 = homogeneous(A, p1), h2 = homogeneous(A, p2);
+  Algebra::V n[3];
+  ExactPoly b[3];
+  normal_plane_row(A, p1, h1, n[0], b[0]);
+  normal_plane_row(A, p2, h2, n[1], b[1]);
+  // Bisector (10) times w1^2 w2^2: 2 (P1 w2 - P2 w1) w1 w2 . X =
+  // |P1|^2 w2^2 - |P2|^2 w1^2.
+  const ExactPoly w12 = A.mul(h1.w, h2.w);
+  const Algebra::V e = A.sub(A.scale(h2.w, h1.P), A.scale(h1.w, h2.P));
+  n[2] = A.scale(w12.scaled(2.0), e);
+  b[2] = A.mul(A.dot(h1.P, h1.P), A.mul(h2.w, h2.w)) -
+         A.mul(A.dot(h2.P, h2.P), A.mul(h1.w, h1.w));
+  Algebra::V N;
+  ExactPoly D;
+  A.cramer(n, b, N, D);
+  // s' = (N' D - N D') / D^2.
+  const Algebra::V Ns = A.sub(A.scale(D, A.derivative(N)), A.scale(D.derivative(), N));
+  const ExactPoly D2 = A.mul(D, D);
+  ExactFrame F;
+  F.o = to_exact(N, D);
+  F.a = to_exact(Ns, D2);
+  F.p = to_exact(h1.P, h1.w);
+  squared_distance(A, h1, N, D, F.r2_num, F.r2_den);
+  if (A.overflow) return Status::degree_too_high;
+  if (F.o.w.is_zero()) return Status::dependent_planes;
+  out = F;
+  return Status::ok;
+}
+
+Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
+                        const RationalCurve& p3, ExactFrame& out) {
+  Algebra A;
+  const Hom h1 = homogeneous(A, p1), h2 = homogeneous(A, p2), h3 = homogeneous(A, p3);
+  // e_j = p1 - p_j = (P1 w_j - P_j w1) / (w1 w_j); n = e2 x e3 up to the
+  // factor w1^2 w2 w3, which does not change the planes.
+  const Algebra::V e2 = A.sub(A.scale(h2.w, h1.P), A.scale(h1.w, h2.P));
+  const Algebra::V e3 = A.sub(A.scale(h3.w, h1.P), A.scale(h1.w, h3.P));
+  Algebra::V n[3];
+  ExactPoly b[3];
+  // (24) times w1: n . X = n . P1 / w1  ->  (w1 n | n . P1).
+  const Algebra::V nn = A.cross(e2, e3);
+  n[0] = A.scale(h1.w, nn);
+  b[0] = A.dot(nn, h1.P);
+  // (25), (26) times w1^2 w_j^2 (see PRCS's bisector).
+  const Hom* hj[2] = {&h2, &h3};
+  const Algebra::V* ej[2] = {&e2, &e3};
+  for (int j = 0; j < 2; ++j) {
+    const ExactPoly w1j = A.mul(h1.w, hj[j]->w);
+    n[1 + j] = A.scale(w1j.scaled(2.0), *ej[j]);
+    b[1 + j] = A.mul(A.dot(h1.P, h1.P), A.mul(hj[j]->w, hj[j]->w)) -
+               A.mul(A.dot(hj[j]->P, hj[j]->P), A.mul(h1.w, h1.w));
+  }
+  Algebra::V N;
+  ExactPoly D;
+  A.cramer(n, b, N, D);
+  ExactFrame F;
+  F.o = to_exact(N, D);
+  F.a = to_exact(nn, ExactPoly(1.0));
+  F.p = to_exact(h1.P, h1.w);
+  squared_distance(A, h1, N, D, F.r2_num, F.r2_den);
+  if (A.overflow) return Status::degree_too_high;
+  if (F.o.w.is_zero()) return Status::collinear_points;
+  out = F;
+  return Status::ok;
+}
+
+double cross_identity_residual(const ExactVec3& a, const ExactVec3& b) {
+  Algebra A;
+  double worst = 0, scale = 0;
+  const ExactPoly* an[3] = {&a.x, &a.y, &a.z};
+  const ExactPoly* bn[3] = {&b.x, &b.y, &b.z};
+  for (int j = 0; j < 3; ++j) {
+    const ExactPoly l = A.mul(*an[j], b.w), r = A.mul(*bn[j], a.w);
+    const ExactPoly d = l - r;
+    for (int k = 0; k <= d.deg; ++k) worst = std::max(worst, std::abs(d.c[k]));
+    for (int k = 0; k <= l.deg; ++k) scale = std::max(scale, std::abs(l.c[k]));
+    for (int k = 0; k <= r.deg; ++k) scale = std::max(scale, std::abs(r.c[k]));
+  }
+  if (A.overflow) return HUGE_VAL;
+  return scale > 0 ? worst / scale : worst;
+}
+
+}  // namespace v0
+}  // namespace cyclide
