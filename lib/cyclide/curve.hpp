@@ -19,14 +19,15 @@ enum class CurveKind : int {
   line_element = 2,  // constant point P with a tangent t (PRCS input)
 };
 
-// The polynomials are in the local variable t = (u - origin) / scale:
-// Bezier and Hermite curves put t = -1..1 on their interval, which keeps
-// the power form well conditioned for high degrees (power form about u = 0
-// on [0.5, 1.5] loses 1e-8 at degree 15; the local form keeps ~1e-14).
+// Two bases: power form in u (curves given by coefficients), or Bernstein
+// form on [u0, u0 + h] (Bezier and Hermite curves). Bernstein curves are
+// evaluated by de Casteljau: converting a degree-15 Hermite curve to power
+// form loses up to 4e-5 in its 7th derivative, de Casteljau keeps ~1e-13.
 struct RationalCurve {
   CurveKind kind = CurveKind::rational;
-  CurvePoly x, y, z, w;  // homogeneous numerator (x, y, z) and weight w, in t
-  double origin = 0.0, scale_u = 1.0;  // t = (u - origin) / scale_u
+  CurvePoly x, y, z, w;  // homogeneous (x, y, z, w): power or Bernstein coefficients
+  bool bernstein = false;
+  double u0 = 0.0, h = 1.0;  // Bernstein interval [u0, u0 + h]
   Vec3d tangent = Vec3d::Zero();  // line elements only
 
   int degree() const;
@@ -37,24 +38,20 @@ struct RationalCurve {
   // element's point has derivative zero; its tangent is separate).
   template <int N, class S>
   Vec3<Taylor<S, N>> taylor(const S& u) const {
-    const S t = (u - S(origin)) / S(scale_u);
-    Taylor<S, N> X = x.taylor<N>(t), Y = y.taylor<N>(t), Z = z.taylor<N>(t),
-                 W = w.taylor<N>(t);
-    // d/du = (1/scale_u) d/dt: coefficient k scales by scale_u^-k.
-    S f(1);
-    for (int k = 1; k <= N; ++k) {
-      f = f / S(scale_u);
-      X.c[k] *= f;
-      Y.c[k] *= f;
-      Z.c[k] *= f;
-      W.c[k] *= f;
+    if (bernstein) {
+      const S t = (u - S(u0)) / S(h);
+      const int n = degree();
+      const Taylor<S, N> W = bernstein_taylor<N>(w.c, n, t, h);
+      return Vec3<Taylor<S, N>>(bernstein_taylor<N>(x.c, n, t, h) / W,
+                                bernstein_taylor<N>(y.c, n, t, h) / W,
+                                bernstein_taylor<N>(z.c, n, t, h) / W);
     }
-    return Vec3<Taylor<S, N>>(X / W, Y / W, Z / W);
+    const Taylor<S, N> W = w.taylor<N>(u);
+    return Vec3<Taylor<S, N>>(x.taylor<N>(u) / W, y.taylor<N>(u) / W, z.taylor<N>(u) / W);
   }
   Vec3d point(double u) const {
-    const double t = (u - origin) / scale_u;
-    const double W = w(t);
-    return Vec3d(x(t) / W, y(t) / W, z(t) / W);
+    const auto P = taylor<0>(u);
+    return Vec3d(P[0].c[0], P[1].c[0], P[2].c[0]);
   }
 };
 

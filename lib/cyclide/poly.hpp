@@ -129,6 +129,38 @@ bool multiply(const Poly<T, CapA>& a, const Poly<T, CapB>& b, Poly<T, Cap>& r) {
   return true;
 }
 
+// Taylor coefficients at t of the polynomial with Bernstein coefficients
+// b_0..b_n on [0,1], with respect to u = u0 + h t (so d/du = h^-1 d/dt).
+// One de Casteljau run gives all derivatives: after n-k steps the k-th
+// forward difference of the remaining k+1 points times n!/(n-k)! is the
+// k-th derivative. Stable for every degree (unlike the power form).
+template <int N, class S, class T>
+Taylor<S, N> bernstein_taylor(const T* b, int n, const S& t, double h) {
+  S pts[64];
+  for (int i = 0; i <= n; ++i) pts[i] = S(b[i]);
+  Taylor<S, N> r;
+  const S one_minus_t = S(1) - t;
+  for (int level = n; level >= 0; --level) {
+    const int k = level;  // k+1 = number of points left
+    if (k <= N) {
+      // k-th forward difference of pts[0..k]: sum (-1)^(k-i) C(k,i) pts[i].
+      S diff(0);
+      double binom = 1.0;  // C(k, i)
+      for (int i = 0; i <= k; ++i) {
+        diff += S(((k - i) % 2 ? -binom : binom)) * pts[i];
+        binom = binom * double(k - i) / double(i + 1);
+      }
+      // n!/(n-k)! / k! / h^k  (Taylor coefficient = derivative / k!).
+      double f = 1.0;
+      for (int i = 0; i < k; ++i) f *= double(n - i) / double(i + 1) / h;
+      r.c[k] = S(f) * diff;
+    }
+    if (level == 0) break;
+    for (int i = 0; i < level; ++i) pts[i] = one_minus_t * pts[i] + t * pts[i + 1];
+  }
+  return r;
+}
+
 // Binomial coefficient as a double (exact for the degrees used here).
 inline double binomial(int n, int k) {
   if (k < 0 || k > n) return 0.0;

@@ -82,14 +82,14 @@ Status make_bezier_curve(int degree, const double* ctrl, const double* weights,
   }
   RationalCurve c;
   CurvePoly* polys[4] = {&c.x, &c.y, &c.z, &c.w};
-  // Power form in the local t in [-1, 1] (see RationalCurve).
-  for (int j = 0; j < 4; ++j) {
-    from_bernstein(b[j], degree, -1.0, 1.0, *polys[j]);
-    polys[j]->trim_relative(1e-15);
-  }
-  c.origin = 0.5 * (u0 + u1);
-  c.scale_u = 0.5 * (u1 - u0);
-  if (c.w.is_zero()) return Status::invalid_argument;
+  // Kept in Bernstein form (see RationalCurve); all four share the degree.
+  bool weight_zero = true;
+  for (int j = 0; j < 4; ++j) polys[j]->assign(b[j], degree);
+  for (int i = 0; i <= degree; ++i) weight_zero = weight_zero && b[3][i] == 0.0;
+  if (weight_zero) return Status::invalid_argument;
+  c.bernstein = true;
+  c.u0 = u0;
+  c.h = u1 - u0;
   out = c;
   return Status::ok;
 }

@@ -12,15 +12,13 @@ namespace {
 struct Algebra {
   bool overflow = false;
 
-  // A curve polynomial in t = (u - origin)/scale as a polynomial in u:
-  // scale coefficient k by scale^-k, then shift by -origin.
-  ExactPoly lift(const CurvePoly& p, double origin, double scale) {
+  // A curve polynomial as a polynomial in u (Bernstein curves converted).
+  ExactPoly lift(const RationalCurve& c, const CurvePoly& p) {
     ExactPoly r;
-    r.assign(p);
-    double f = 1;
-    for (int k = 0; k <= r.deg; ++k, f /= scale) r.c[k] *= f;
-    for (int i = 0; i < r.deg; ++i)
-      for (int j = r.deg - 1; j >= i; --j) r.c[j] = r.c[j] - origin * r.c[j + 1];
+    if (c.bernstein)
+      from_bernstein(p.c, p.deg, c.u0, c.u0 + c.h, r);
+    else
+      r.assign(p);
     return r;
   }
   ExactPoly mul(const ExactPoly& a, const ExactPoly& b) {
@@ -72,8 +70,7 @@ struct Hom {
 };
 
 Hom homogeneous(Algebra& A, const RationalCurve& c) {
-  const double o = c.origin, s = c.scale_u;
-  return {A.vec(A.lift(c.x, o, s), A.lift(c.y, o, s), A.lift(c.z, o, s)), A.lift(c.w, o, s)};
+  return {A.vec(A.lift(c, c.x), A.lift(c, c.y), A.lift(c, c.z)), A.lift(c, c.w)};
 }
 
 // |P1/w1 - N/D|^2 as num/den: |P1 D - N w1|^2 / (w1 D)^2.
