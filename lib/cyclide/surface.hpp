@@ -105,6 +105,8 @@ class Surface {
   Status eval_row(const CircleRow& r, double v, const EvalOut& out) const;
 
   // x(u,v) and optionally x_u, x_v, unit normal. On error nothing is written.
+  // u must satisfy input_ok; v may be any finite double (|v| > 1 is
+  // evaluated in 1/v, so v = 1e300 is the generator p(u) to rounding).
   Status eval(double u, double v, const EvalOut& out) const;
 
   // Grid x(us[i], vs[j]) at index i * nv + j. Every u and v is validated

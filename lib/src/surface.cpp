@@ -124,7 +124,7 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
 }
 
 Status Surface::eval_row(const CircleRow& r, double v, const EvalOut& out) const {
-  if (!input_ok(v)) return Status::not_finite;
+  if (!std::isfinite(v)) return Status::not_finite;
   PointResult R;
   if (Status st = compute_point(*this, r, v, out.du, out.dv, out.normal, R);
       st != Status::ok)
@@ -135,7 +135,7 @@ Status Surface::eval_row(const CircleRow& r, double v, const EvalOut& out) const
 }
 
 Status Surface::eval(double u, double v, const EvalOut& out) const {
-  if (!input_ok(u) || !input_ok(v)) return Status::not_finite;
+  if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
   const bool with_du = out.du || (out.normal && !is_canal_by_construction());
   CircleRow r;
   if (Status st = row(u, with_du, r); st != Status::ok) return st;
@@ -154,7 +154,7 @@ Status Surface::eval_grid(const double* us, std::size_t nu, const double* vs,
   // frame bounds (kMaxFrameMagnitude, kMinAxisLength, normalized f) make
   // every point of a valid row finite.
   for (std::size_t j = 0; j < nv; ++j)
-    if (!input_ok(vs[j])) return Status::not_finite;
+    if (!std::isfinite(vs[j])) return Status::not_finite;
   CircleRow r;
   for (std::size_t i = 0; i < nu; ++i)
     if (Status st = row(us[i], with_du, r); st != Status::ok) return st;
@@ -190,7 +190,7 @@ Status Surface::eval_batch(const double* uv, std::size_t uv_stride, std::size_t 
     std::size_t count_singular = 0;
     for (std::size_t k = 0; k < count; ++k) {
       const double u = uv[k * uv_stride], v = uv[k * uv_stride + 1];
-      if (!input_ok(v)) return Status::not_finite;
+      if (!std::isfinite(v)) return Status::not_finite;
       CircleRow r;
       if (Status st = row(u, with_du, r); st != Status::ok) return st;
       PointResult R;
