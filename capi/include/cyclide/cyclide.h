@@ -242,6 +242,15 @@ CYC_API int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surfac
  *  when it is 0. */
 CYC_API int cyc_optimizer_available(void);
 
+/** Point inversion: the parameters (u, v) of the point of the surface
+ *  closest to `point` (u within the domain), that point and its distance.
+ *  A closed-form scan of the circles gives the start, Levenberg-Marquardt
+ *  (Ceres) refines it. Optimizer tier: may allocate; CYC_E_UNSUPPORTED
+ *  without Ceres. Any of closest/distance may be NULL. */
+CYC_API int cyc_optimize_closest_point(cyc_context* ctx, const cyc_surface* surface,
+                                       const double point[3], double* u, double* v,
+                                       double closest[3], double* distance);
+
 #ifdef __cplusplus
 }
 #endif

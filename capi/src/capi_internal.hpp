@@ -1,0 +1,201 @@
+// Internals shared by the C ABI's translation units: handle layouts, the
+// guard every entry point runs through, messages and buffer checks.
+#pragma once
+
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <type_traits>
+#include <utility>
+
+#include "cyclide/cyclide.h"
+#include "cyclide/surface.hpp"
+
+using cyclide::RationalCurve;
+using cyclide::Surface;
+
+// ------------------------------------------------------------ handles
+
+struct cyc_context {
+  cyc_allocator allocator;
+  cyc_error_handler handler = nullptr;
+  void* handler_userdata = nullptr;
+  int last_status = CYC_OK;
+  char message[CYC_ERROR_MESSAGE_SIZE] = {0};
+};
+
+struct cyc_curve {
+  cyc_allocator allocator;
+  RationalCurve curve;
+};
+
+struct cyc_surface {
+  cyc_allocator allocator;
+  Surface surface;
+};
+
+
+namespace cyclide {
+namespace capi {
+
+// ------------------------------------------------------------ memory
+
+inline void* default_alloc(void*, size_t size, size_t alignment) {
+  if (alignment <= alignof(std::max_align_t)) return std::malloc(size);
+  const size_t rounded = (size + alignment - 1) / alignment * alignment;
+  return std::aligned_alloc(alignment, rounded);
+}
+inline void default_free(void*, void* p) { std::free(p); }
+
+inline const cyc_allocator kDefaultAllocator = {default_alloc, default_free, nullptr};
+
+template <class H>
+H* allocate(const cyc_allocator& a) {
+  void* mem = a.alloc(a.userdata, sizeof(H), alignof(H));
+  if (!mem) return nullptr;
+  H* h = new (mem) H();
+  h->allocator = a;
+  return h;
+}
+
+template <class H>
+void release(H* h) {
+  if (!h) return;
+  const cyc_allocator a = h->allocator;
+  h->~H();
+  a.free(a.userdata, h);
+}
+
+// ------------------------------------------------------------ errors
+
+// The result of an entry point's body: a status and, on error, a message.
+struct Outcome {
+  int status = CYC_OK;
+  char text[CYC_ERROR_MESSAGE_SIZE] = {0};
+};
+
+inline Outcome ok() { return {}; }
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+inline Outcome fail(int status, const char* fmt, ...) {
+  Outcome o;
+  o.status = status;
+  va_list ap;
+  va_start(ap, fmt);
+  std::vsnprintf(o.text, sizeof o.text, fmt, ap);
+  va_end(ap);
+  return o;
+}
+
+// What each core status means, for messages.
+inline const char* explain(Status s) {
+  switch (s) {
+    case Status::ok: return "ok";
+    case Status::null_argument: return "a required pointer is NULL";
+    case Status::invalid_argument: return "an argument is out of its range";
+    case Status::not_finite: return "an input is NaN, infinite or larger than 1e100";
+    case Status::degree_too_high: return "a degree exceeds its bound";
+    case Status::bad_domain: return "the parameter interval is empty or reversed";
+    case Status::dependent_planes:
+      return "the planes M, N, B are (nearly) dependent (seed 000 Remark 1: e.g. two "
+             "lines of curvature, or parallel normal planes)";
+    case Status::zero_tangent:
+      return "an input curve has a zero tangent, so its normal plane is undefined "
+             "(a constant point is not a PRCS input; use a line element)";
+    case Status::collinear_points: return "the three PRRS points are (nearly) collinear";
+    case Status::degenerate_circle_parameter:
+      return "f(u, .) is not a Mobius map here (alpha delta - beta gamma = 0)";
+    case Status::not_canal: return "the surface is not a canal surface by construction";
+    case Status::singular_point: return "the normal is undefined here (x_u x x_v = 0)";
+    case Status::degenerate_ringed: return "n . c' = 0: the sphere family (3) is undefined";
+    case Status::numerical_overflow:
+      return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
+    case Status::buffer_too_small: return "a buffer is too small";
+    case Status::out_of_memory: return "out of memory";
+    case Status::unsupported: return "not supported by this build";
+    case Status::internal_error: return "internal error";
+  }
+  return "unknown status";
+}
+
+inline Outcome from_core(const char* fn, Status s) {
+  if (s == Status::ok) return ok();
+  return fail(int(s), "%s: %s", fn, explain(s));
+}
+
+inline Outcome from_core_at(const char* fn, Status s, double u) {
+  if (s == Status::ok) return ok();
+  return fail(int(s), "%s: %s (at u = %.17g)", fn, explain(s), u);
+}
+
+// The one guard every entry point runs through.
+template <class Body>
+int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
+  if (!ctx) return CYC_E_NULL_ARGUMENT;
+  Outcome o;
+  try {
+    o = body();
+  } catch (const std::bad_alloc&) {
+    o = fail(CYC_E_OUT_OF_MEMORY, "%s: out of memory", fn);
+  } catch (...) {
+    o = fail(CYC_E_INTERNAL, "%s: unexpected exception", fn);
+  }
+  ctx->last_status = o.status;
+  std::memcpy(ctx->message, o.text, sizeof ctx->message);
+  ctx->message[sizeof ctx->message - 1] = '\0';
+  if (o.status != CYC_OK && ctx->handler)
+    ctx->handler(o.status, ctx->message, ctx->handler_userdata);
+  return o.status;
+}
+
+#define REQUIRE(ptr)                                                    \
+  do {                                                                  \
+    if (!(ptr)) return fail(CYC_E_NULL_ARGUMENT, "%s: %s is NULL", fn, #ptr); \
+  } while (0)
+
+inline Vec3d vec(const double* p) { return Vec3d(p[0], p[1], p[2]); }
+
+inline void put3(double* dst, const Vec3d& v) {
+  dst[0] = v.x();
+  dst[1] = v.y();
+  dst[2] = v.z();
+}
+
+// Hand a new curve to the caller.
+template <class H, class T>
+Outcome emit(const char* fn, cyc_context* ctx, H** out, const T& value) {
+  H* h = allocate<H>(ctx->allocator);
+  if (!h) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+  if constexpr (std::is_same_v<H, cyc_curve>)
+    h->curve = value;
+  else
+    h->surface = value;
+  *out = h;
+  return ok();
+}
+
+// A caller buffer for n vectors, or a reason why not.
+inline Outcome check_buffer(const char* fn, const char* name, const cyc_buffer3& b, size_t n) {
+  if (!b.data) return ok();
+  if (b.stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: %s.stride < 3", fn, name);
+  if (b.capacity < n)
+    return fail(CYC_E_BUFFER_TOO_SMALL, "%s: %s holds %zu vectors, %zu needed", fn, name,
+                b.capacity, n);
+  return ok();
+}
+
+inline Strided3 strided(const cyc_buffer3& b) {
+  Strided3 s;
+  s.data = b.data;
+  s.stride = b.stride;
+  return s;
+}
+
+}  // namespace capi
+}  // namespace cyclide
+
+
