@@ -1,1 +1,1896 @@
-int main(void){return 0;}
+/* The C ABI from strict C99 (label capi): every entry point of cyclide.h,
+ * the worked examples of seed 000 (Example 2: PRCS, Example 3: PRRS), every
+ * error status the header documents, and the contract that on any error the
+ * outputs are left untouched (outputs are prefilled with sentinels and
+ * compared afterwards). A counting allocator checks alignment and that every
+ * allocation is freed. Prints exactly one final line "N passed, M failed". */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cyclide/cyclide.h"
+
+/* ------------------------------------------------------------ harness */
+
+static int g_passed = 0;
+static int g_failed = 0;
+
+static void check_(int ok, int line, const char* what) {
+  if (ok) {
+    ++g_passed;
+  } else {
+    ++g_failed;
+    fprintf(stderr, "FAILED line %d: %s\n", line, what);
+  }
+}
+#define CHECK(cond) check_((cond) ? 1 : 0, __LINE__, #cond)
+
+/* A call returned `want`; the context agrees (last status, and a non-empty
+ * message on error, "" on success). ctx may be NULL. */
+static void check_status_(const cyc_context* ctx, int got, int want, int line, const char* what) {
+  const char* msg = cyc_context_last_error(ctx);
+  int ok = got == want;
+  if (ok && msg == NULL) ok = 0;
+  if (ok && cyc_context_last_status(ctx) != (ctx ? want : CYC_E_NULL_ARGUMENT)) ok = 0;
+  if (ok && want != CYC_OK && msg[0] == '\0') ok = 0;
+  if (ok && want == CYC_OK && ctx && msg[0] != '\0') ok = 0;
+  if (ok) {
+    ++g_passed;
+  } else {
+    ++g_failed;
+    fprintf(stderr,
+            "FAILED line %d: %s returned %s (%d), expected %s (%d); last status %d, "
+            "message \"%s\"\n",
+            line, what, cyc_status_name(got), got, cyc_status_name(want), want,
+            cyc_context_last_status(ctx), msg ? msg : "(NULL)");
+  }
+}
+#define CHECK_STATUS(ctx, call, want) check_status_((ctx), (call), (want), __LINE__, #call)
+
+/* ------------------------------------------------------------ helpers */
+
+#define SENT 12345.0
+#define TOL 1e-12
+
+static double g_sentinel_cell[4];
+#define CTX_SENT ((cyc_context*)(void*)g_sentinel_cell)
+#define CURVE_SENT ((cyc_curve*)(void*)g_sentinel_cell)
+#define SURF_SENT ((cyc_surface*)(void*)g_sentinel_cell)
+
+static void fill(double* a, size_t n) {
+  size_t i;
+  for (i = 0; i < n; ++i) a[i] = SENT;
+}
+static int untouched(const double* a, size_t n) {
+  size_t i;
+  for (i = 0; i < n; ++i)
+    if (a[i] != SENT) return 0;
+  return 1;
+}
+static int finite_all(const double* a, size_t n) {
+  size_t i;
+  for (i = 0; i < n; ++i)
+    if (!isfinite(a[i])) return 0;
+  return 1;
+}
+static double norm3(const double* a) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+static double dot3(const double* a, const double* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static void sub3(const double* a, const double* b, double* r) {
+  r[0] = a[0] - b[0];
+  r[1] = a[1] - b[1];
+  r[2] = a[2] - b[2];
+}
+static void cross3(const double* a, const double* b, double* r) {
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+/* |got - want| <= tol |want| (absolute tol when want = 0). */
+static int close3(const double* got, const double* want, double tol) {
+  double d[3];
+  const double n = norm3(want);
+  sub3(got, want, d);
+  return finite_all(got, 3) && norm3(d) <= tol * (n > 0 ? n : 1.0);
+}
+static int close1(double got, double want, double tol) {
+  const double n = fabs(want);
+  return isfinite(got) && fabs(got - want) <= tol * (n > 0 ? n : 1.0);
+}
+static double dist3(const double* a, const double* b) {
+  double d[3];
+  sub3(a, b, d);
+  return isfinite(norm3(d)) ? norm3(d) : HUGE_VAL;
+}
+/* SPEC.md section 4: Hermite end-derivative accuracy
+ * 2^j 4e-16 n!/(n-j)! max|b_i| / h^j. */
+static double hermite_bound(int n, int j, double h, double bmax) {
+  double f = 4e-16 * bmax;
+  int i;
+  for (i = 0; i < j; ++i) f *= 2.0 * (n - i) / h;
+  return f;
+}
+static int equal3(const double* a, double x, double y, double z) {
+  return a[0] == x && a[1] == y && a[2] == z;
+}
+
+static void fill_circle(cyc_circle* c) {
+  fill(c->center, 3);
+  fill(c->normal, 3);
+  c->radius2 = SENT;
+}
+static int circle_untouched(const cyc_circle* c) {
+  return untouched(c->center, 3) && untouched(c->normal, 3) && c->radius2 == SENT;
+}
+static void fill_sphere(cyc_sphere* s) {
+  fill(s->center, 3);
+  s->radius2 = SENT;
+}
+static int sphere_untouched(const cyc_sphere* s) {
+  return untouched(s->center, 3) && s->radius2 == SENT;
+}
+static cyc_buffer3 buf(double* data, size_t capacity, size_t stride) {
+  cyc_buffer3 b;
+  b.data = data;
+  b.capacity = capacity;
+  b.stride = stride;
+  return b;
+}
+static cyc_mobius identity_mobius(void) {
+  cyc_mobius m;
+  memset(&m, 0, sizeof m);
+  m.degree = 0;
+  m.alpha[0] = 1.0;
+  m.delta[0] = 1.0;
+  return m;
+}
+
+/* A failing curve/surface constructor leaves *out untouched. */
+#define CURVE_FAILS(ctx, want, call)     \
+  do {                                   \
+    cyc_curve* out_ = CURVE_SENT;        \
+    CHECK_STATUS((ctx), (call), (want)); \
+    CHECK(out_ == CURVE_SENT);           \
+  } while (0)
+#define SURFACE_FAILS(ctx, want, call)   \
+  do {                                   \
+    cyc_surface* out_ = SURF_SENT;       \
+    CHECK_STATUS((ctx), (call), (want)); \
+    CHECK(out_ == SURF_SENT);            \
+  } while (0)
+
+/* ------------------------------------------------------------ allocators */
+
+#define MAX_LIVE 4096
+
+typedef struct counting_allocator {
+  long allocs;        /* successful allocations */
+  long frees;         /* frees of pointers this allocator returned */
+  long refused;       /* allocations answered with NULL */
+  long bad_alignment; /* requested alignment not a power of two <= 64 */
+  long bad_free;      /* free of a pointer not live in this allocator */
+  long fail_after;    /* allocations granted before NULL is returned; < 0: never */
+  size_t max_alignment;
+  void* live[MAX_LIVE];
+  int nlive;
+} counting_allocator;
+
+static void counting_init(counting_allocator* a, long fail_after) {
+  memset(a, 0, sizeof *a);
+  a->fail_after = fail_after;
+}
+
+static void* counting_alloc(void* userdata, size_t size, size_t alignment) {
+  counting_allocator* a = (counting_allocator*)userdata;
+  unsigned char* raw;
+  unsigned char* p;
+  if (alignment == 0 || (alignment & (alignment - 1)) != 0 || alignment > 64) a->bad_alignment++;
+  if (alignment > a->max_alignment) a->max_alignment = alignment;
+  if ((a->fail_after >= 0 && a->allocs >= a->fail_after) || a->nlive >= MAX_LIVE) {
+    a->refused++;
+    return NULL;
+  }
+  /* Align every block to 64 (the largest alignment the contract allows);
+   * the raw pointer is stored just below the returned block. */
+  raw = (unsigned char*)malloc(size + 64 + sizeof(void*));
+  if (!raw) return NULL;
+  p = raw + sizeof(void*);
+  p += (64 - (uintptr_t)p % 64) % 64;
+  memcpy(p - sizeof(void*), &raw, sizeof raw);
+  if (alignment != 0 && (uintptr_t)p % alignment != 0) a->bad_alignment++;
+  a->live[a->nlive++] = p;
+  a->allocs++;
+  return p;
+}
+
+static void counting_free(void* userdata, void* ptr) {
+  counting_allocator* a = (counting_allocator*)userdata;
+  unsigned char* raw;
+  int i;
+  if (!ptr) return;
+  for (i = 0; i < a->nlive; ++i)
+    if (a->live[i] == ptr) break;
+  if (i == a->nlive) {
+    a->bad_free++;
+    return;
+  }
+  a->live[i] = a->live[--a->nlive];
+  memcpy(&raw, (unsigned char*)ptr - sizeof(void*), sizeof raw);
+  a->frees++;
+  free(raw);
+}
+
+static cyc_allocator counting_allocator_of(counting_allocator* a) {
+  cyc_allocator c;
+  c.alloc = counting_alloc;
+  c.free = counting_free;
+  c.userdata = a;
+  return c;
+}
+
+/* ------------------------------------------------------------ error handler */
+
+typedef struct handler_state {
+  int calls;
+  int status;
+  char message[CYC_ERROR_MESSAGE_SIZE];
+  const char* message_ptr;
+} handler_state;
+
+static void record_error(int status, const char* message, void* userdata) {
+  handler_state* h = (handler_state*)userdata;
+  h->calls++;
+  h->status = status;
+  h->message_ptr = message;
+  if (message) {
+    strncpy(h->message, message, sizeof h->message - 1);
+    h->message[sizeof h->message - 1] = '\0';
+  } else {
+    h->message[0] = '\0';
+  }
+}
+
+/* ------------------------------------------------------------ seed 000 data */
+
+/* Example 2 (PRCS of p1 = (u,0,0), p2 = (2u,u,1), f = v):
+ * x = N / D with
+ *   N = (u v^2 - 12 v u^2 - 4u - 3v, 48u^3 - 4 v u^2 + 18u + v, 2(16u^2 - 3uv + 5)),
+ *   D = 16u^2 + 10 + v^2,
+ * spine s = (u, 3u, 1/2 - 2u^2). */
+static void ex2_expected(double u, double v, double x[3], double xu[3], double xv[3]) {
+  const double N[3] = {u * v * v - 12 * v * u * u - 4 * u - 3 * v,
+                       48 * u * u * u - 4 * v * u * u + 18 * u + v,
+                       2 * (16 * u * u - 3 * u * v + 5)};
+  const double Nu[3] = {v * v - 24 * u * v - 4, 144 * u * u - 8 * u * v + 18, 64 * u - 6 * v};
+  const double Nv[3] = {2 * u * v - 12 * u * u - 3, -4 * u * u + 1, -6 * u};
+  const double D = 16 * u * u + 10 + v * v, Du = 32 * u, Dv = 2 * v;
+  int j;
+  for (j = 0; j < 3; ++j) {
+    x[j] = N[j] / D;
+    xu[j] = (Nu[j] - x[j] * Du) / D;
+    xv[j] = (Nv[j] - x[j] * Dv) / D;
+  }
+}
+static void ex2_spine(double u, double s[3]) {
+  s[0] = u;
+  s[1] = 3 * u;
+  s[2] = 0.5 - 2 * u * u;
+}
+static double ex2_radius2(double u) { /* |p1(u) - s(u)|^2 */
+  const double z = 0.5 - 2 * u * u;
+  return 9 * u * u + z * z;
+}
+
+/* Example 3 (PRRS of the line (u,0,0) and the points (0,0,1), (1,2,1), f = v):
+ * x = ((u-5+v)(uv-1), 2(5-u-v)(1+u^2), 3u^2+5u-2uv+5v+5) / (v^2 + 5 + 4u^2). */
+static void ex3_expected(double u, double v, double x[3], double xu[3], double xv[3]) {
+  const double a = u - 5 + v, b = u * v - 1, g = 5 - u - v, h = 1 + u * u;
+  const double N[3] = {a * b, 2 * g * h, 3 * u * u + 5 * u - 2 * u * v + 5 * v + 5};
+  const double Nu[3] = {b + a * v, 2 * (-h + g * 2 * u), 6 * u + 5 - 2 * v};
+  const double Nv[3] = {b + a * u, -2 * h, -2 * u + 5};
+  const double D = v * v + 5 + 4 * u * u, Du = 8 * u, Dv = 2 * v;
+  int j;
+  for (j = 0; j < 3; ++j) {
+    x[j] = N[j] / D;
+    xu[j] = (Nu[j] - x[j] * Du) / D;
+    xv[j] = (Nv[j] - x[j] * Dv) / D;
+  }
+}
+
+static const double kP2[3] = {0.0, 0.0, 1.0};
+static const double kP3[3] = {1.0, 2.0, 1.0};
+
+static const double kUs[] = {-0.9, -0.35, 0.0, 0.3, 0.5, 0.95};
+static const double kVs[] = {-7.0, -1.5, -0.2, 0.0, 0.6, 2.0, 9.0, 1000.0};
+#define NUS (sizeof kUs / sizeof kUs[0])
+#define NVS (sizeof kVs / sizeof kVs[0])
+
+/* ------------------------------------------------------------ tests */
+
+static const struct {
+  int code;
+  const char* name;
+} kStatusNames[] = {
+    {CYC_OK, "CYC_OK"},
+    {CYC_E_NULL_ARGUMENT, "CYC_E_NULL_ARGUMENT"},
+    {CYC_E_INVALID_ARGUMENT, "CYC_E_INVALID_ARGUMENT"},
+    {CYC_E_NOT_FINITE, "CYC_E_NOT_FINITE"},
+    {CYC_E_DEGREE_TOO_HIGH, "CYC_E_DEGREE_TOO_HIGH"},
+    {CYC_E_BAD_DOMAIN, "CYC_E_BAD_DOMAIN"},
+    {CYC_E_DEPENDENT_PLANES, "CYC_E_DEPENDENT_PLANES"},
+    {CYC_E_ZERO_TANGENT, "CYC_E_ZERO_TANGENT"},
+    {CYC_E_COLLINEAR_POINTS, "CYC_E_COLLINEAR_POINTS"},
+    {CYC_E_DEGENERATE_CIRCLE_PARAMETER, "CYC_E_DEGENERATE_CIRCLE_PARAMETER"},
+    {CYC_E_NOT_CANAL, "CYC_E_NOT_CANAL"},
+    {CYC_E_SINGULAR_POINT, "CYC_E_SINGULAR_POINT"},
+    {CYC_E_DEGENERATE_RINGED, "CYC_E_DEGENERATE_RINGED"},
+    {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
+    {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
+    {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
+    {CYC_E_UNSUPPORTED, "CYC_E_UNSUPPORTED"},
+    {CYC_E_INTERNAL, "CYC_E_INTERNAL"},
+};
+#define NSTATUS (sizeof kStatusNames / sizeof kStatusNames[0])
+
+static void test_versions_and_names(void) {
+  size_t i, j;
+  const int unknown[] = {-1, 6, 99, 107, 199, 201, 302, 402, 12345};
+  CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
+  CHECK(cyc_version_string() != NULL);
+  CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
+  CHECK(cyc_abi_version() == CYC_ABI_VERSION);
+  CHECK(CYC_VERSION_NUMBER ==
+        CYC_VERSION_MAJOR * 10000 + CYC_VERSION_MINOR * 100 + CYC_VERSION_PATCH);
+  /* The frozen numbers. */
+  CHECK(CYC_OK == 0 && CYC_E_NULL_ARGUMENT == 1 && CYC_E_INVALID_ARGUMENT == 2 &&
+        CYC_E_NOT_FINITE == 3 && CYC_E_DEGREE_TOO_HIGH == 4 && CYC_E_BAD_DOMAIN == 5);
+  CHECK(CYC_E_DEPENDENT_PLANES == 100 && CYC_E_ZERO_TANGENT == 101 &&
+        CYC_E_COLLINEAR_POINTS == 102 && CYC_E_DEGENERATE_CIRCLE_PARAMETER == 103 &&
+        CYC_E_NOT_CANAL == 104 && CYC_E_SINGULAR_POINT == 105 && CYC_E_DEGENERATE_RINGED == 106);
+  CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
+        CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
+  CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2);
+  for (i = 0; i < NSTATUS; ++i) {
+    const char* n = cyc_status_name(kStatusNames[i].code);
+    CHECK(n != NULL && strcmp(n, kStatusNames[i].name) == 0);
+  }
+  for (j = 0; j < sizeof unknown / sizeof unknown[0]; ++j) {
+    const char* n = cyc_status_name(unknown[j]);
+    int known = 0;
+    CHECK(n != NULL && n[0] != '\0');
+    if (!n) continue;
+    for (i = 0; i < NSTATUS; ++i)
+      if (strcmp(n, kStatusNames[i].name) == 0) known = 1;
+    CHECK(!known);
+  }
+  CHECK(cyc_optimizer_available() == 0 || cyc_optimizer_available() == 1);
+}
+
+static void test_contexts(void) {
+  cyc_context* ctx = CTX_SENT;
+  counting_allocator ca;
+  cyc_allocator a;
+  cyc_curve* c = CURVE_SENT;
+  const double P[3] = {1, 2, 3};
+
+  /* Default allocator. */
+  CHECK(cyc_context_create(NULL, &ctx) == CYC_OK);
+  CHECK(ctx != NULL && ctx != CTX_SENT);
+  CHECK(cyc_context_last_status(ctx) == CYC_OK);
+  CHECK(cyc_context_last_error(ctx) != NULL && cyc_context_last_error(ctx)[0] == '\0');
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P, &c), CYC_OK);
+  cyc_curve_destroy(ctx, c);
+  cyc_context_destroy(ctx);
+
+  /* NULL out. */
+  CHECK(cyc_context_create(NULL, NULL) == CYC_E_NULL_ARGUMENT);
+
+  /* Allocator without functions: invalid; *out untouched. */
+  counting_init(&ca, -1);
+  a = counting_allocator_of(&ca);
+  a.alloc = NULL;
+  ctx = CTX_SENT;
+  CHECK(cyc_context_create(&a, &ctx) == CYC_E_INVALID_ARGUMENT);
+  CHECK(ctx == CTX_SENT);
+  a = counting_allocator_of(&ca);
+  a.free = NULL;
+  CHECK(cyc_context_create(&a, &ctx) == CYC_E_INVALID_ARGUMENT);
+  CHECK(ctx == CTX_SENT);
+  CHECK(ca.allocs == 0);
+
+  /* The allocator answers NULL at once: the context itself fails. */
+  counting_init(&ca, 0);
+  a = counting_allocator_of(&ca);
+  CHECK(cyc_context_create(&a, &ctx) == CYC_E_OUT_OF_MEMORY);
+  CHECK(ctx == CTX_SENT);
+  CHECK(ca.refused == 1 && ca.allocs == 0);
+
+  /* The allocator grants the context, then answers NULL: every handle
+   * constructor reports CYC_E_OUT_OF_MEMORY and leaves *out untouched. */
+  counting_init(&ca, 1);
+  a = counting_allocator_of(&ca);
+  CHECK(cyc_context_create(&a, &ctx) == CYC_OK);
+  CHECK(ctx != CTX_SENT && ca.allocs == 1);
+  if (ctx != CTX_SENT) {
+    const double d[3] = {1, 0, 0};
+    const double line0[3] = {0, 0, 0};
+    const double coeffs[6] = {0, 0, 0, 1, 0, 0};
+    CURVE_FAILS(ctx, CYC_E_OUT_OF_MEMORY, cyc_curve_create_point(ctx, P, &out_));
+    CURVE_FAILS(ctx, CYC_E_OUT_OF_MEMORY, cyc_curve_create_line(ctx, line0, d, &out_));
+    CURVE_FAILS(ctx, CYC_E_OUT_OF_MEMORY, cyc_curve_create_polynomial(ctx, 1, coeffs, 3, &out_));
+    CHECK(ca.refused >= 3);
+    /* Raise the limit: one curve fits, the surface does not. */
+    ca.fail_after = -1;
+    {
+      cyc_curve* p1 = NULL;
+      cyc_curve* p2 = NULL;
+      cyc_curve* p3 = NULL;
+      const double c2[6] = {0, 0, 1, 2, 1, 0};
+      const double P3[3] = {1, 2, 1};
+      CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, coeffs, 3, &p1), CYC_OK);
+      CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, c2, 3, &p2), CYC_OK);
+      CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P3, &p3), CYC_OK);
+      ca.fail_after = ca.allocs;
+      SURFACE_FAILS(ctx, CYC_E_OUT_OF_MEMORY, cyc_prcs_create(ctx, p1, p2, NULL, -1, 1, &out_));
+      SURFACE_FAILS(ctx, CYC_E_OUT_OF_MEMORY, cyc_prrs_create(ctx, p1, p2, p3, NULL, -1, 1, &out_));
+      cyc_curve_destroy(ctx, p1);
+      cyc_curve_destroy(ctx, p2);
+      cyc_curve_destroy(ctx, p3);
+    }
+    cyc_context_destroy(ctx);
+  }
+  CHECK(ca.allocs == ca.frees);
+  CHECK(ca.bad_free == 0 && ca.bad_alignment == 0);
+
+  /* Handles keep their allocator and may outlive their context. */
+  counting_init(&ca, -1);
+  a = counting_allocator_of(&ca);
+  ctx = NULL;
+  CHECK(cyc_context_create(&a, &ctx) == CYC_OK);
+  c = NULL;
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P, &c), CYC_OK);
+  CHECK(ca.allocs == 2);
+  /* The allocator struct was copied: clobbering the caller's copy is fine. */
+  a.alloc = NULL;
+  a.free = NULL;
+  a.userdata = NULL;
+  {
+    cyc_curve* c2 = NULL;
+    CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P, &c2), CYC_OK);
+    CHECK(ca.allocs == 3);
+    cyc_curve_destroy(ctx, c2);
+    CHECK(ca.frees == 1);
+  }
+  cyc_context_destroy(ctx);
+  CHECK(ca.frees == 2);
+  cyc_curve_destroy(NULL, c);
+  CHECK(ca.allocs == 3 && ca.frees == 3 && ca.bad_free == 0);
+  CHECK(ca.max_alignment >= 1 && ca.bad_alignment == 0);
+
+  /* destroy(NULL) is a no-op everywhere; so is a NULL context. */
+  cyc_context_destroy(NULL);
+  cyc_curve_destroy(NULL, NULL);
+  cyc_surface_destroy(NULL, NULL);
+  CHECK(cyc_context_last_error(NULL) != NULL);
+  CHECK(cyc_context_last_status(NULL) == CYC_E_NULL_ARGUMENT);
+  CHECK(cyc_context_set_error_handler(NULL, NULL, NULL) == CYC_E_NULL_ARGUMENT);
+}
+
+static void test_error_handler(cyc_context* ctx) {
+  handler_state h;
+  const double P[3] = {0, 0, 0};
+  const double zero[3] = {0, 0, 0};
+  const double d[3] = {0, 1, 0};
+  cyc_curve* c = NULL;
+  memset(&h, 0, sizeof h);
+  CHECK_STATUS(ctx, cyc_context_set_error_handler(ctx, record_error, &h), CYC_OK);
+  CURVE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_curve_create_line(ctx, P, zero, &out_));
+  CHECK(h.calls == 1);
+  CHECK(h.status == CYC_E_ZERO_TANGENT);
+  CHECK(h.message[0] != '\0');
+  CHECK(strcmp(h.message, cyc_context_last_error(ctx)) == 0);
+  CHECK(h.message_ptr == cyc_context_last_error(ctx));
+  /* Success does not call the handler and clears the message. */
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, P, d, &c), CYC_OK);
+  CHECK(h.calls == 1);
+  CHECK(strcmp(cyc_context_last_error(ctx), "") == 0);
+  /* A NULL-argument error calls it too. */
+  CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_line(ctx, NULL, d, &out_));
+  CHECK(h.calls == 2 && h.status == CYC_E_NULL_ARGUMENT);
+  /* Removed with NULL: no more calls. */
+  CHECK_STATUS(ctx, cyc_context_set_error_handler(ctx, NULL, NULL), CYC_OK);
+  CURVE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_curve_create_line(ctx, P, zero, &out_));
+  CHECK(h.calls == 2);
+  cyc_curve_destroy(ctx, c);
+}
+
+/* Evaluate a curve and check finiteness of the result. */
+static int eval_curve(cyc_context* ctx, const cyc_curve* c, double u, int order, double* out) {
+  const int s = cyc_curve_eval(ctx, c, u, order, out, 3 * (size_t)(order + 1));
+  CHECK(s == CYC_OK);
+  if (s == CYC_OK) CHECK(finite_all(out, 3 * (size_t)(order + 1)));
+  return s;
+}
+
+static void test_curves(cyc_context* ctx) {
+  const double nan = NAN, inf = INFINITY;
+  double out[27];
+  int deg;
+  cyc_curve* c = NULL;
+
+  /* ---- polynomial: p(u) = (1,2,3) + (0,1,-1) u + (2,0,1) u^2, stride 5. */
+  {
+    const double coeffs[15] = {1, 2, 3, SENT, SENT, 0, 1, -1, SENT, SENT, 2, 0, 1, SENT, SENT};
+    double bad[15];
+    const double u = 0.7;
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, coeffs, 5, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 2);
+    fill(out, 27);
+    if (eval_curve(ctx, c, u, 3, out) == CYC_OK) {
+      const double p[3] = {1 + 2 * u * u, 2 + u, 3 - u + u * u};
+      const double dp[3] = {4 * u, 1, -1 + 2 * u};
+      const double ddp[3] = {4, 0, 2};
+      CHECK(close3(out, p, TOL));
+      CHECK(close3(out + 3, dp, TOL));
+      CHECK(close3(out + 6, ddp, TOL));
+      CHECK(equal3(out + 9, 0, 0, 0));
+      CHECK(untouched(out + 12, 15));
+    }
+    /* Order 0 with capacity exactly 3. */
+    fill(out, 27);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.0, 0, out, 3), CYC_OK);
+    CHECK(equal3(out, 1, 2, 3) && untouched(out + 3, 24));
+    /* Errors of cyc_curve_eval: untouched outputs. */
+    fill(out, 27);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, nan, 1, out, 27), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, inf, 1, out, 27), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 1e101, 1, out, 27), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.5, 2, out, 8), CYC_E_BUFFER_TOO_SMALL);
+    CHECK(strstr(cyc_context_last_error(ctx), "9") != NULL); /* the needed count */
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.5, 9, out, 27), CYC_E_INVALID_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.5, -1, out, 27), CYC_E_INVALID_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, NULL, 0.5, 1, out, 27), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.5, 1, NULL, 27), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_curve_eval(NULL, c, 0.5, 1, out, 27), CYC_E_NULL_ARGUMENT);
+    CHECK(untouched(out, 27));
+    /* Order 8 is the largest. */
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.5, 8, out, 27), CYC_OK);
+    CHECK(finite_all(out, 27));
+    /* cyc_curve_degree errors. */
+    deg = -77;
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, NULL, &deg), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_curve_degree(NULL, c, &deg), CYC_E_NULL_ARGUMENT);
+    CHECK(deg == -77);
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+
+    memcpy(bad, coeffs, sizeof bad);
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_polynomial(ctx, 2, NULL, 5, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, coeffs, 5, NULL), CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_curve_create_polynomial(NULL, 2, coeffs, 5, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT, cyc_curve_create_polynomial(ctx, 2, coeffs, 2, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_curve_create_polynomial(ctx, -1, coeffs, 5, &out_));
+    CURVE_FAILS(ctx, CYC_E_DEGREE_TOO_HIGH, cyc_curve_create_polynomial(ctx, 16, coeffs, 3, &out_));
+    bad[6] = nan;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_polynomial(ctx, 2, bad, 5, &out_));
+    bad[6] = inf;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_polynomial(ctx, 2, bad, 5, &out_));
+    bad[6] = -1e101;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_polynomial(ctx, 2, bad, 5, &out_));
+  }
+  /* Degree 15 is the largest. */
+  {
+    double coeffs[48];
+    int k;
+    for (k = 0; k < 48; ++k) coeffs[k] = 1.0 / (k + 1);
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 15, coeffs, 3, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 15);
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+  }
+
+  /* ---- rational: the unit circle ((1-u^2), 2u, 0) / (1+u^2), stride 6. */
+  {
+    const double coeffs[18] = {1, 0,    0,    1,  SENT, SENT, 0, 2,    0,
+                               0, SENT, SENT, -1, 0,    0,    1, SENT, SENT};
+    double bad[18];
+    const double u = -0.4, w = 1 + u * u;
+    CHECK_STATUS(ctx, cyc_curve_create_rational(ctx, 2, coeffs, 6, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 2);
+    if (eval_curve(ctx, c, u, 1, out) == CYC_OK) {
+      const double p[3] = {(1 - u * u) / w, 2 * u / w, 0};
+      const double dp[3] = {-4 * u / (w * w), 2 * (1 - u * u) / (w * w), 0};
+      CHECK(close3(out, p, TOL));
+      CHECK(close3(out + 3, dp, TOL));
+      CHECK(close1(norm3(out), 1.0, TOL));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+
+    memcpy(bad, coeffs, sizeof bad);
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_rational(ctx, 2, NULL, 6, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_rational(ctx, 2, coeffs, 6, NULL), CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_curve_create_rational(NULL, 2, coeffs, 6, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT, cyc_curve_create_rational(ctx, 2, coeffs, 3, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT, cyc_curve_create_rational(ctx, -1, coeffs, 6, &out_));
+    CURVE_FAILS(ctx, CYC_E_DEGREE_TOO_HIGH, cyc_curve_create_rational(ctx, 16, coeffs, 4, &out_));
+    bad[3] = nan;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_rational(ctx, 2, bad, 6, &out_));
+    bad[3] = -inf;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_rational(ctx, 2, bad, 6, &out_));
+    /* w identically zero. */
+    bad[3] = 0;
+    bad[15] = 0;
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT, cyc_curve_create_rational(ctx, 2, bad, 6, &out_));
+  }
+  /* A pole: (1,0,0)/u at u = 0 is not finite. */
+  {
+    const double coeffs[8] = {1, 0, 0, 0, 0, 0, 0, 1};
+    CHECK_STATUS(ctx, cyc_curve_create_rational(ctx, 1, coeffs, 4, &c), CYC_OK);
+    fill(out, 27);
+    CHECK_STATUS(ctx, cyc_curve_eval(ctx, c, 0.0, 1, out, 27), CYC_E_NUMERICAL_OVERFLOW);
+    CHECK(untouched(out, 27));
+    if (eval_curve(ctx, c, 2.0, 0, out) == CYC_OK) CHECK(equal3(out, 0.5, 0, 0));
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+  }
+
+  /* ---- Bezier: quadratic on [1, 3], with and without weights. */
+  {
+    const double ctrl[12] = {1, 0, 0, SENT, 1, 1, 0, SENT, 0, 1, 2, SENT};
+    const double weights[3] = {1, 2, 0.5};
+    const double zero_weights[3] = {0, 0, 0};
+    double badw[3] = {1, 2, 0.5};
+    double bad[12];
+    const double u0 = 1, u1 = 3;
+    /* Unweighted: p(u0) = P0, p(u1) = P2, p'(u0) = 2 (P1 - P0) / (u1 - u0). */
+    CHECK_STATUS(ctx, cyc_curve_create_bezier(ctx, 2, ctrl, 4, NULL, u0, u1, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 2);
+    if (eval_curve(ctx, c, u0, 1, out) == CYC_OK) {
+      const double P0[3] = {1, 0, 0}, d0[3] = {0, 1, 0};
+      CHECK(close3(out, P0, TOL));
+      CHECK(close3(out + 3, d0, TOL));
+    }
+    if (eval_curve(ctx, c, u1, 1, out) == CYC_OK) {
+      const double P2[3] = {0, 1, 2}, d1[3] = {-1, 0, 2};
+      CHECK(close3(out, P2, TOL));
+      CHECK(close3(out + 3, d1, TOL));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+    /* Weighted: p'(u0) = 2 (w1/w0) (P1 - P0)/(u1 - u0), p'(u1) = 2 (w1/w2) (P2 - P1)/h. */
+    CHECK_STATUS(ctx, cyc_curve_create_bezier(ctx, 2, ctrl, 4, weights, u0, u1, &c), CYC_OK);
+    if (eval_curve(ctx, c, u0, 1, out) == CYC_OK) {
+      const double P0[3] = {1, 0, 0}, d0[3] = {0, 2, 0};
+      CHECK(close3(out, P0, TOL));
+      CHECK(close3(out + 3, d0, TOL));
+    }
+    if (eval_curve(ctx, c, u1, 1, out) == CYC_OK) {
+      const double P2[3] = {0, 1, 2}, d1[3] = {-4, 0, 8};
+      CHECK(close3(out, P2, TOL));
+      CHECK(close3(out + 3, d1, TOL));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+
+    memcpy(bad, ctrl, sizeof bad);
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT,
+                cyc_curve_create_bezier(ctx, 2, NULL, 4, NULL, u0, u1, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_bezier(ctx, 2, ctrl, 4, NULL, u0, u1, NULL),
+                 CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT,
+                cyc_curve_create_bezier(NULL, 2, ctrl, 4, NULL, u0, u1, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 2, NULL, u0, u1, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_curve_create_bezier(ctx, -1, ctrl, 4, NULL, u0, u1, &out_));
+    CURVE_FAILS(ctx, CYC_E_DEGREE_TOO_HIGH,
+                cyc_curve_create_bezier(ctx, 16, ctrl, 3, NULL, u0, u1, &out_));
+    CURVE_FAILS(ctx, CYC_E_BAD_DOMAIN,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 4, NULL, u1, u0, &out_));
+    CURVE_FAILS(ctx, CYC_E_BAD_DOMAIN,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 4, NULL, u0, u0, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 4, NULL, nan, u1, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 4, NULL, u0, inf, &out_));
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 4, zero_weights, u0, u1, &out_));
+    badw[1] = nan;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE,
+                cyc_curve_create_bezier(ctx, 2, ctrl, 4, badw, u0, u1, &out_));
+    bad[5] = inf;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE,
+                cyc_curve_create_bezier(ctx, 2, bad, 4, NULL, u0, u1, &out_));
+    bad[5] = nan;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE,
+                cyc_curve_create_bezier(ctx, 2, bad, 4, NULL, u0, u1, &out_));
+  }
+
+  /* ---- line, point, line element. */
+  {
+    const double P[3] = {1, -2, 0.5}, d[3] = {0.25, 3, -1}, zero[3] = {0, 0, 0};
+    const double nanv[3] = {0, nan, 0}, infv[3] = {inf, 0, 0};
+    const double u = 1.75;
+    CHECK_STATUS(ctx, cyc_curve_create_line(ctx, P, d, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 1);
+    if (eval_curve(ctx, c, u, 2, out) == CYC_OK) {
+      const double p[3] = {P[0] + u * d[0], P[1] + u * d[1], P[2] + u * d[2]};
+      CHECK(close3(out, p, TOL));
+      CHECK(close3(out + 3, d, TOL));
+      CHECK(equal3(out + 6, 0, 0, 0));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+    CURVE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_curve_create_line(ctx, P, zero, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_line(ctx, nanv, d, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_line(ctx, P, infv, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_line(ctx, NULL, d, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_line(ctx, P, NULL, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_line(ctx, P, d, NULL), CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_curve_create_line(NULL, P, d, &out_));
+
+    CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 0);
+    if (eval_curve(ctx, c, u, 1, out) == CYC_OK) {
+      CHECK(equal3(out, P[0], P[1], P[2]));
+      CHECK(equal3(out + 3, 0, 0, 0));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_point(ctx, nanv, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_point(ctx, infv, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_point(ctx, NULL, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P, NULL), CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_curve_create_point(NULL, P, &out_));
+
+    /* A line element evaluates as its (constant) point. */
+    CHECK_STATUS(ctx, cyc_curve_create_line_element(ctx, P, d, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 0);
+    if (eval_curve(ctx, c, u, 1, out) == CYC_OK) {
+      CHECK(equal3(out, P[0], P[1], P[2]));
+      CHECK(equal3(out + 3, 0, 0, 0));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+    CURVE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_curve_create_line_element(ctx, P, zero, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_line_element(ctx, nanv, d, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_line_element(ctx, P, infv, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_line_element(ctx, NULL, d, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_curve_create_line_element(ctx, P, NULL, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_line_element(ctx, P, d, NULL), CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_curve_create_line_element(NULL, P, d, &out_));
+  }
+
+  /* ---- Hermite: C^2 data on [0.5, 2] reproduced at both ends (degree 5). */
+  {
+    const double start[9] = {1, 0, -1, 0.5, 2, 0, -3, 1, 4};
+    const double end[9] = {0, 2, 1, 1, -1, 0.25, 2, 0, -5};
+    double bad[9];
+    const double u0 = 0.5, u1 = 2.0;
+    int k;
+    CHECK_STATUS(ctx, cyc_curve_create_hermite(ctx, 2, u0, u1, start, end, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 5);
+    if (eval_curve(ctx, c, u0, 2, out) == CYC_OK)
+      for (k = 0; k < 3; ++k) CHECK(close3(out + 3 * k, start + 3 * k, TOL));
+    if (eval_curve(ctx, c, u1, 2, out) == CYC_OK)
+      for (k = 0; k < 3; ++k) CHECK(close3(out + 3 * k, end + 3 * k, TOL));
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+    /* Order 0: the segment from start to end. */
+    CHECK_STATUS(ctx, cyc_curve_create_hermite(ctx, 0, u0, u1, start, end, &c), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_degree(ctx, c, &deg), CYC_OK);
+    CHECK(deg == 1);
+    if (eval_curve(ctx, c, 1.25, 0, out) == CYC_OK) {
+      const double mid[3] = {0.5, 1, 0};
+      CHECK(close3(out, mid, TOL));
+    }
+    cyc_curve_destroy(ctx, c);
+    c = NULL;
+    /* Order 7 (degree 15) is the largest. SPEC.md section 4: the j-th end
+     * derivative is reproduced to 2^j 4e-16 n!/(n-j)! max|b_i| / h^j; the
+     * control points b_i stay within 2 max|data| = 5 here. */
+    {
+      double s7[24], e7[24];
+      for (k = 0; k < 24; ++k) {
+        s7[k] = (k % 5) - 2.0;
+        e7[k] = (k % 3) + 0.5;
+      }
+      CHECK_STATUS(ctx, cyc_curve_create_hermite(ctx, 7, 0, 1, s7, e7, &c), CYC_OK);
+      if (eval_curve(ctx, c, 0.0, 7, out) == CYC_OK)
+        for (k = 0; k < 8; ++k)
+          CHECK(dist3(out + 3 * k, s7 + 3 * k) <= hermite_bound(15, k, 1.0, 5.0));
+      if (eval_curve(ctx, c, 1.0, 7, out) == CYC_OK)
+        for (k = 0; k < 8; ++k)
+          CHECK(dist3(out + 3 * k, e7 + 3 * k) <= hermite_bound(15, k, 1.0, 5.0));
+      cyc_curve_destroy(ctx, c);
+      c = NULL;
+      CURVE_FAILS(ctx, CYC_E_DEGREE_TOO_HIGH,
+                  cyc_curve_create_hermite(ctx, 8, 0, 1, s7, e7, &out_));
+    }
+    memcpy(bad, end, sizeof bad);
+    CURVE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_curve_create_hermite(ctx, -1, u0, u1, start, end, &out_));
+    CURVE_FAILS(ctx, CYC_E_BAD_DOMAIN, cyc_curve_create_hermite(ctx, 2, u1, u0, start, end, &out_));
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE,
+                cyc_curve_create_hermite(ctx, 2, nan, u1, start, end, &out_));
+    bad[7] = nan;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_hermite(ctx, 2, u0, u1, start, bad, &out_));
+    bad[7] = inf;
+    CURVE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_curve_create_hermite(ctx, 2, u0, u1, bad, end, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT,
+                cyc_curve_create_hermite(ctx, 2, u0, u1, NULL, end, &out_));
+    CURVE_FAILS(ctx, CYC_E_NULL_ARGUMENT,
+                cyc_curve_create_hermite(ctx, 2, u0, u1, start, NULL, &out_));
+    CHECK_STATUS(ctx, cyc_curve_create_hermite(ctx, 2, u0, u1, start, end, NULL),
+                 CYC_E_NULL_ARGUMENT);
+    CURVE_FAILS(NULL, CYC_E_NULL_ARGUMENT,
+                cyc_curve_create_hermite(NULL, 2, u0, u1, start, end, &out_));
+  }
+}
+
+/* ---- Example 2 (PRCS). */
+
+typedef struct ex2 {
+  cyc_curve* p1;
+  cyc_curve* p2;
+  cyc_surface* S;
+} ex2;
+
+static void ex2_create(cyc_context* ctx, ex2* e) {
+  /* p1 as a polynomial (stride 3), p2 as a polynomial with stride 4. */
+  const double c1[6] = {0, 0, 0, 1, 0, 0};
+  const double c2[8] = {0, 0, 1, SENT, 2, 1, 0, SENT};
+  e->p1 = e->p2 = NULL;
+  e->S = NULL;
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, c1, 3, &e->p1), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, c2, 4, &e->p2), CYC_OK);
+  CHECK_STATUS(ctx, cyc_prcs_create(ctx, e->p1, e->p2, NULL, -1.0, 1.0, &e->S), CYC_OK);
+}
+
+static void ex2_destroy(cyc_context* ctx, ex2* e) {
+  cyc_surface_destroy(ctx, e->S);
+  cyc_curve_destroy(ctx, e->p1);
+  cyc_curve_destroy(ctx, e->p2);
+}
+
+static void test_example2(cyc_context* ctx) {
+  ex2 e;
+  size_t i, j;
+  int kind = -1;
+  double u0 = SENT, u1 = SENT;
+  ex2_create(ctx, &e);
+  if (!e.S) return;
+
+  CHECK_STATUS(ctx, cyc_surface_kind(ctx, e.S, &kind), CYC_OK);
+  CHECK(kind == CYC_SURFACE_PRCS);
+  CHECK_STATUS(ctx, cyc_surface_domain(ctx, e.S, &u0, &u1), CYC_OK);
+  CHECK(u0 == -1.0 && u1 == 1.0);
+
+  /* x, x_u, x_v against the closed form; the canal normal (x - s)/r. */
+  for (i = 0; i < NUS; ++i)
+    for (j = 0; j < NVS; ++j) {
+      const double u = kUs[i], v = kVs[j];
+      double x[3], xu[3], xv[3], n[3], ex[3], exu[3], exv[3], s[3], d[3];
+      fill(x, 3);
+      fill(xu, 3);
+      fill(xv, 3);
+      fill(n, 3);
+      ex2_expected(u, v, ex, exu, exv);
+      ex2_spine(u, s);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, x, xu, xv, n), CYC_OK);
+      CHECK(close3(x, ex, TOL));
+      CHECK(close3(xu, exu, TOL));
+      CHECK(close3(xv, exv, TOL));
+      sub3(ex, s, d);
+      CHECK(close1(dot3(d, d), ex2_radius2(u), TOL));
+      d[0] /= sqrt(ex2_radius2(u));
+      d[1] /= sqrt(ex2_radius2(u));
+      d[2] /= sqrt(ex2_radius2(u));
+      CHECK(close3(n, d, TOL));
+      CHECK(close1(norm3(n), 1.0, TOL));
+      CHECK(fabs(dot3(n, xu)) <= 1e-10 * norm3(xu));
+      CHECK(fabs(dot3(n, xv)) <= 1e-10 * norm3(xv));
+      /* Point only, and each output alone, give the same values. */
+      {
+        double x2[3], xu2[3], xv2[3], n2[3];
+        fill(x2, 3);
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, x2, NULL, NULL, NULL), CYC_OK);
+        CHECK(close3(x2, ex, TOL));
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, NULL, xu2, NULL, NULL), CYC_OK);
+        CHECK(close3(xu2, exu, TOL));
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, NULL, NULL, xv2, NULL), CYC_OK);
+        CHECK(close3(xv2, exv, TOL));
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, NULL, NULL, NULL, n2), CYC_OK);
+        CHECK(close3(n2, n, TOL));
+      }
+    }
+
+  /* Sphere: s(u), r^2(u); circle: on the sphere, plane normal along s'. */
+  for (i = 0; i < NUS; ++i) {
+    const double u = kUs[i];
+    double s[3], ds[3], t[3];
+    cyc_sphere sp;
+    cyc_circle ci;
+    ex2_spine(u, s);
+    ds[0] = 1;
+    ds[1] = 3;
+    ds[2] = -4 * u;
+    fill_sphere(&sp);
+    CHECK_STATUS(ctx, cyc_surface_sphere(ctx, e.S, u, &sp), CYC_OK);
+    CHECK(close3(sp.center, s, TOL));
+    CHECK(close1(sp.radius2, ex2_radius2(u), TOL));
+    fill_circle(&ci);
+    CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, u, &ci), CYC_OK);
+    CHECK(finite_all(ci.center, 3) && finite_all(ci.normal, 3) && isfinite(ci.radius2));
+    CHECK(close1(norm3(ci.normal), 1.0, TOL));
+    cross3(ci.normal, ds, t);
+    CHECK(norm3(t) <= 1e-12 * norm3(ds));
+    for (j = 0; j < NVS; ++j) {
+      double x[3], xu[3], xv[3], d[3];
+      ex2_expected(u, kVs[j], x, xu, xv);
+      sub3(x, ci.center, d);
+      CHECK(close1(dot3(d, d), ci.radius2, 1e-11));
+      CHECK(fabs(dot3(d, ci.normal)) <= 1e-11 * sqrt(ci.radius2));
+    }
+    /* SPEC.md section 5: p2(u) = (2u, u, 1) lies on the circle at u. */
+    {
+      const double p2[3] = {2 * u, u, 1};
+      double d[3];
+      sub3(p2, ci.center, d);
+      CHECK(close1(dot3(d, d), ci.radius2, 1e-11));
+      CHECK(fabs(dot3(d, ci.normal)) <= 1e-11 * sqrt(ci.radius2));
+    }
+    /* Ringed data (eq. (1)): c and rho^2 of the circle, n = s'. */
+    {
+      double c[3], n[3], rho2 = SENT, rr = SENT;
+      fill(c, 3);
+      fill(n, 3);
+      CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, e.S, u, c, n, &rho2, &rr), CYC_OK);
+      CHECK(close3(c, ci.center, 1e-11));
+      CHECK(close3(n, ds, TOL));
+      CHECK(close1(rho2, ci.radius2, 1e-11));
+      CHECK(isfinite(rr));
+      /* rho rho' = (rho^2)'/2: central difference of the circle's radius^2. */
+      {
+        const double h = 1e-5;
+        cyc_circle a, b;
+        CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, u + h, &a), CYC_OK);
+        CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, u - h, &b), CYC_OK);
+        CHECK(fabs(rr - (a.radius2 - b.radius2) / (4 * h)) <= 1e-6 * (1 + fabs(rr)));
+      }
+      /* Every output may be NULL. */
+      CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, e.S, u, NULL, NULL, NULL, NULL), CYC_OK);
+      {
+        double rho2b = SENT;
+        CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, e.S, u, NULL, NULL, &rho2b, NULL), CYC_OK);
+        CHECK(rho2b == rho2);
+      }
+    }
+    /* Eq. (3) on a canal surface: its sphere family is the touching spheres. */
+    fill_sphere(&sp);
+    CHECK_STATUS(ctx, cyc_surface_ringed_sphere(ctx, e.S, u, &sp), CYC_OK);
+    CHECK(close3(sp.center, s, 1e-10));
+    CHECK(close1(sp.radius2, ex2_radius2(u), 1e-10));
+  }
+
+  /* Canal test (2): canal by construction. */
+  {
+    double res = SENT;
+    int is_canal = -7;
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 0.0, &res, &is_canal), CYC_OK);
+    CHECK(isfinite(res) && res >= 0 && res <= 1e-9);
+    CHECK(is_canal == 1);
+    res = SENT;
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 1e-6, &res, NULL), CYC_OK);
+    CHECK(isfinite(res) && res <= 1e-9);
+    is_canal = -7;
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, -1.0, NULL, &is_canal), CYC_OK);
+    CHECK(is_canal == 1);
+  }
+
+  /* parameter_of inverts eval; the generator p1 is v = HUGE_VAL. */
+  for (i = 0; i < NUS; ++i)
+    for (j = 0; j + 1 < NVS; ++j) {
+      const double u = kUs[i], v = kVs[j];
+      double x[3], xu[3], xv[3], w = SENT;
+      ex2_expected(u, v, x, xu, xv);
+      CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, u, x, &w), CYC_OK);
+      CHECK(close1(w, v, 1e-9));
+    }
+  for (i = 0; i < NUS; ++i) {
+    const double p1[3] = {kUs[i], 0, 0};
+    const double big[3] = {2e100, -1e300, DBL_MAX};
+    double w = SENT, x[3];
+    int k;
+    CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, kUs[i], p1, &w), CYC_OK);
+    CHECK(w == HUGE_VAL);
+    /* Any finite v is fine (|v| > 1 is evaluated in 1/v): huge v is p1(u). */
+    for (k = 0; k < 3; ++k) {
+      fill(x, 3);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, kUs[i], big[k], x, NULL, NULL, NULL), CYC_OK);
+      CHECK(close3(x, p1, TOL));
+    }
+  }
+
+  /* ---- Errors: each leaves its outputs untouched. */
+  {
+    const double nan = NAN, inf = INFINITY;
+    double x[3], xu[3], xv[3], n[3], c[3], nn[3], rho2, rr, w, res;
+    int is_canal, k2 = -7;
+    cyc_sphere sp;
+    cyc_circle ci;
+    const double X[3] = {1, 2, 3}, bad[3] = {1, nan, 3};
+    fill(x, 3);
+    fill(xu, 3);
+    fill(xv, 3);
+    fill(n, 3);
+    fill(c, 3);
+    fill(nn, 3);
+    rho2 = rr = w = res = SENT;
+    is_canal = -7;
+    fill_sphere(&sp);
+    fill_circle(&ci);
+    u0 = u1 = SENT;
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, nan, 0.5, x, xu, xv, n), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, 0.5, nan, x, xu, xv, n), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, 0.5, inf, x, xu, xv, n), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, -inf, 0.5, x, xu, xv, n), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, 2e100, 0.5, x, xu, xv, n), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, 0.5, 0.5, NULL, NULL, NULL, NULL),
+                 CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, NULL, 0.5, 0.5, x, xu, xv, n), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_eval(NULL, e.S, 0.5, 0.5, x, xu, xv, n), CYC_E_NULL_ARGUMENT);
+    CHECK(untouched(x, 3) && untouched(xu, 3) && untouched(xv, 3) && untouched(n, 3));
+
+    CHECK_STATUS(ctx, cyc_surface_kind(ctx, NULL, &k2), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_kind(ctx, e.S, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_kind(NULL, e.S, &k2), CYC_E_NULL_ARGUMENT);
+    CHECK(k2 == -7);
+    CHECK_STATUS(ctx, cyc_surface_domain(ctx, NULL, &u0, &u1), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_domain(ctx, e.S, NULL, &u1), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_domain(ctx, e.S, &u0, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_domain(NULL, e.S, &u0, &u1), CYC_E_NULL_ARGUMENT);
+    CHECK(u0 == SENT && u1 == SENT);
+
+    CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, nan, &ci), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, inf, &ci), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_circle(ctx, NULL, 0.5, &ci), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, 0.5, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_circle(NULL, e.S, 0.5, &ci), CYC_E_NULL_ARGUMENT);
+    CHECK(circle_untouched(&ci));
+
+    CHECK_STATUS(ctx, cyc_surface_sphere(ctx, e.S, nan, &sp), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_sphere(ctx, NULL, 0.5, &sp), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_sphere(ctx, e.S, 0.5, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_sphere(NULL, e.S, 0.5, &sp), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_ringed_sphere(ctx, e.S, nan, &sp), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_ringed_sphere(ctx, NULL, 0.5, &sp), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_ringed_sphere(ctx, e.S, 0.5, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_ringed_sphere(NULL, e.S, 0.5, &sp), CYC_E_NULL_ARGUMENT);
+    CHECK(sphere_untouched(&sp));
+
+    CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, e.S, nan, c, nn, &rho2, &rr), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, e.S, -inf, c, nn, &rho2, &rr), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, NULL, 0.5, c, nn, &rho2, &rr),
+                 CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_ringed_data(NULL, e.S, 0.5, c, nn, &rho2, &rr),
+                 CYC_E_NULL_ARGUMENT);
+    CHECK(untouched(c, 3) && untouched(nn, 3) && rho2 == SENT && rr == SENT);
+
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, nan, &res, &is_canal), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 0.0, NULL, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, NULL, 0.0, &res, &is_canal), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_canal_test(NULL, e.S, 0.0, &res, &is_canal),
+                 CYC_E_NULL_ARGUMENT);
+    CHECK(res == SENT && is_canal == -7);
+
+    CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, nan, X, &w), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, 0.5, bad, &w), CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, NULL, 0.5, X, &w), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, 0.5, NULL, &w), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, 0.5, X, NULL), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(NULL, cyc_surface_parameter_of(NULL, e.S, 0.5, X, &w), CYC_E_NULL_ARGUMENT);
+    CHECK(w == SENT);
+  }
+
+  /* ---- Batch and grid agree with single evaluations. */
+  {
+    enum { NU = 4, NV = 5, NPT = NU * NV };
+    const double us[NU] = {-0.9, -0.2, 0.35, 0.8};
+    const double vs[NV] = {-2, -0.5, 0, 0.75, 3};
+    double P[4 * NPT], DU[3 * NPT], DV[3 * NPT], NO[3 * NPT];
+    double uv[3 * NPT];
+    size_t singular = 777, k;
+    for (i = 0; i < NU; ++i)
+      for (j = 0; j < NV; ++j) {
+        k = i * NV + j;
+        uv[3 * k] = us[i];
+        uv[3 * k + 1] = vs[j];
+        uv[3 * k + 2] = SENT; /* ignored: uv_stride 3 */
+      }
+    fill(P, 4 * NPT);
+    fill(DU, 3 * NPT);
+    fill(DV, 3 * NPT);
+    fill(NO, 3 * NPT);
+    CHECK_STATUS(ctx,
+                 cyc_surface_eval_grid(ctx, e.S, us, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                       buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                 CYC_OK);
+    CHECK(singular == 0);
+    for (i = 0; i < NU; ++i)
+      for (j = 0; j < NV; ++j) {
+        double x[3], xu[3], xv[3], n[3];
+        k = i * NV + j;
+        cyc_surface_eval(ctx, e.S, us[i], vs[j], x, xu, xv, n);
+        CHECK(close3(P + 4 * k, x, 1e-15) && P[4 * k + 3] == SENT);
+        CHECK(close3(DU + 3 * k, xu, 1e-15));
+        CHECK(close3(DV + 3 * k, xv, 1e-15));
+        CHECK(close3(NO + 3 * k, n, 1e-15));
+      }
+    fill(P, 4 * NPT);
+    fill(DU, 3 * NPT);
+    fill(DV, 3 * NPT);
+    fill(NO, 3 * NPT);
+    singular = 777;
+    CHECK_STATUS(ctx,
+                 cyc_surface_eval_batch(ctx, e.S, uv, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                        buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                 CYC_OK);
+    CHECK(singular == 0);
+    for (k = 0; k < NPT; ++k) {
+      double x[3], xu[3], xv[3], n[3];
+      cyc_surface_eval(ctx, e.S, uv[3 * k], uv[3 * k + 1], x, xu, xv, n);
+      CHECK(close3(P + 4 * k, x, 1e-15) && P[4 * k + 3] == SENT);
+      CHECK(close3(DU + 3 * k, xu, 1e-15));
+      CHECK(close3(DV + 3 * k, xv, 1e-15));
+      CHECK(close3(NO + 3 * k, n, 1e-15));
+    }
+    /* Unwanted buffers (data NULL) are skipped; singular may be NULL. */
+    fill(P, 4 * NPT);
+    CHECK_STATUS(ctx,
+                 cyc_surface_eval_batch(ctx, e.S, uv, 3, NPT, buf(P, NPT, 3), buf(NULL, 0, 0),
+                                        buf(NULL, 0, 0), buf(NULL, 0, 0), NULL),
+                 CYC_OK);
+    CHECK(finite_all(P, 3 * NPT) && untouched(P + 3 * NPT, NPT));
+    fill(P, 4 * NPT);
+    CHECK_STATUS(ctx,
+                 cyc_surface_eval_grid(ctx, e.S, us, NU, vs, NV, buf(NULL, 0, 0), buf(NULL, 0, 0),
+                                       buf(NULL, 0, 0), buf(P, NPT, 3), NULL),
+                 CYC_OK);
+    CHECK(finite_all(P, 3 * NPT) && untouched(P + 3 * NPT, NPT));
+    /* Empty batch and grid: fine, nothing written, singular = 0. */
+    singular = 777;
+    CHECK_STATUS(ctx,
+                 cyc_surface_eval_batch(ctx, e.S, NULL, 2, 0, buf(P, 0, 3), buf(NULL, 0, 0),
+                                        buf(NULL, 0, 0), buf(NULL, 0, 0), &singular),
+                 CYC_OK);
+    CHECK(singular == 0);
+    singular = 777;
+    CHECK_STATUS(ctx,
+                 cyc_surface_eval_grid(ctx, e.S, NULL, 0, vs, NV, buf(P, 0, 3), buf(NULL, 0, 0),
+                                       buf(NULL, 0, 0), buf(NULL, 0, 0), &singular),
+                 CYC_OK);
+    CHECK(singular == 0);
+    CHECK(untouched(P + 3 * NPT, NPT));
+
+    /* Errors: all or nothing. */
+    fill(P, 4 * NPT);
+    fill(DU, 3 * NPT);
+    fill(DV, 3 * NPT);
+    fill(NO, 3 * NPT);
+    singular = 777;
+#define ALL_UNTOUCHED()                                                              \
+  CHECK(untouched(P, 4 * NPT) && untouched(DU, 3 * NPT) && untouched(DV, 3 * NPT) && \
+        untouched(NO, 3 * NPT) && singular == 777)
+    {
+      double uvbad[3 * NPT], usbad[NU], vsbad[NV];
+      memcpy(uvbad, uv, sizeof uv);
+      uvbad[3 * (NPT - 1) + 1] = NAN; /* last v */
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uvbad, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NOT_FINITE);
+      ALL_UNTOUCHED();
+      memcpy(uvbad, uv, sizeof uv);
+      uvbad[3 * (NPT - 1)] = INFINITY; /* last u */
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uvbad, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NOT_FINITE);
+      ALL_UNTOUCHED();
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT - 1, 3), &singular),
+                   CYC_E_BUFFER_TOO_SMALL);
+      CHECK(strstr(cyc_context_last_error(ctx), "20") != NULL); /* the needed count */
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 3, NPT, buf(P, NPT - 1, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_BUFFER_TOO_SMALL);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 2),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 0), buf(NO, NPT, 3), &singular),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 1, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, NULL, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NULL_ARGUMENT);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, NULL, uv, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NULL_ARGUMENT);
+      CHECK_STATUS(NULL,
+                   cyc_surface_eval_batch(NULL, e.S, uv, 3, NPT, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                          buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NULL_ARGUMENT);
+      ALL_UNTOUCHED();
+
+      memcpy(usbad, us, sizeof us);
+      memcpy(vsbad, vs, sizeof vs);
+      usbad[NU - 1] = NAN;
+      vsbad[NV - 1] = -INFINITY;
+      CHECK_STATUS(
+          ctx,
+          cyc_surface_eval_grid(ctx, e.S, usbad, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+          CYC_E_NOT_FINITE);
+      CHECK_STATUS(
+          ctx,
+          cyc_surface_eval_grid(ctx, e.S, us, NU, vsbad, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+          CYC_E_NOT_FINITE);
+      CHECK_STATUS(
+          ctx,
+          cyc_surface_eval_grid(ctx, e.S, us, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT - 1, 3),
+                                buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+          CYC_E_BUFFER_TOO_SMALL);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_grid(ctx, e.S, us, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                         buf(DV, NPT, 3), buf(NO, NPT, 2), &singular),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_grid(ctx, e.S, us, NU, vs, NV, buf(P, NPT, 1), buf(DU, NPT, 3),
+                                         buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(
+          ctx,
+          cyc_surface_eval_grid(ctx, e.S, us, (size_t)-1, vs, 2, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+          CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(
+          ctx,
+          cyc_surface_eval_grid(ctx, e.S, NULL, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+          CYC_E_NULL_ARGUMENT);
+      CHECK_STATUS(
+          ctx,
+          cyc_surface_eval_grid(ctx, e.S, us, NU, NULL, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+          CYC_E_NULL_ARGUMENT);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_grid(ctx, NULL, us, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                         buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NULL_ARGUMENT);
+      CHECK_STATUS(NULL,
+                   cyc_surface_eval_grid(NULL, e.S, us, NU, vs, NV, buf(P, NPT, 4), buf(DU, NPT, 3),
+                                         buf(DV, NPT, 3), buf(NO, NPT, 3), &singular),
+                   CYC_E_NULL_ARGUMENT);
+      ALL_UNTOUCHED();
+    }
+#undef ALL_UNTOUCHED
+  }
+
+  /* ---- The same surface from a line, and f = v given explicitly. */
+  {
+    const double O[3] = {0, 0, 0}, X1[3] = {1, 0, 0};
+    cyc_curve* l1 = NULL;
+    cyc_surface* S2 = NULL;
+    cyc_surface* S3 = NULL;
+    const cyc_mobius id = identity_mobius();
+    CHECK_STATUS(ctx, cyc_curve_create_line(ctx, O, X1, &l1), CYC_OK);
+    CHECK_STATUS(ctx, cyc_prcs_create(ctx, l1, e.p2, NULL, -1, 1, &S2), CYC_OK);
+    CHECK_STATUS(ctx, cyc_prcs_create(ctx, e.p1, e.p2, &id, -1, 1, &S3), CYC_OK);
+    for (i = 0; i < NUS && S2 && S3; ++i) {
+      double x[3], xu[3], xv[3], a[3], b[3];
+      ex2_expected(kUs[i], 0.6, x, xu, xv);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, S2, kUs[i], 0.6, a, NULL, NULL, NULL), CYC_OK);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, S3, kUs[i], 0.6, b, NULL, NULL, NULL), CYC_OK);
+      CHECK(close3(a, x, TOL));
+      CHECK(close3(b, x, TOL));
+    }
+    cyc_surface_destroy(ctx, S2);
+    cyc_surface_destroy(ctx, S3);
+    cyc_curve_destroy(ctx, l1);
+  }
+
+  /* ---- A Mobius circle parameter f = (2v + u) / (v + 3):
+   * x_f(u, v) = x(u, f(u, v)). */
+  {
+    cyc_mobius m;
+    cyc_surface* Sf = NULL;
+    memset(&m, 0, sizeof m);
+    m.degree = 1;
+    m.alpha[0] = 2;
+    m.beta[1] = 1;
+    m.gamma[0] = 1;
+    m.delta[0] = 3;
+    CHECK_STATUS(ctx, cyc_prcs_create(ctx, e.p1, e.p2, &m, -1, 1, &Sf), CYC_OK);
+    /* Circles and spheres do not depend on f. */
+    for (i = 0; i < NUS && Sf; ++i) {
+      cyc_circle a, b;
+      cyc_sphere sa, sb;
+      CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, kUs[i], &a), CYC_OK);
+      CHECK_STATUS(ctx, cyc_surface_circle(ctx, Sf, kUs[i], &b), CYC_OK);
+      CHECK(close3(a.center, b.center, TOL) && close3(a.normal, b.normal, TOL) &&
+            close1(a.radius2, b.radius2, TOL));
+      CHECK_STATUS(ctx, cyc_surface_sphere(ctx, e.S, kUs[i], &sa), CYC_OK);
+      CHECK_STATUS(ctx, cyc_surface_sphere(ctx, Sf, kUs[i], &sb), CYC_OK);
+      CHECK(close3(sa.center, sb.center, TOL) && close1(sa.radius2, sb.radius2, TOL));
+    }
+    for (i = 0; i < NUS && Sf; ++i)
+      for (j = 0; j < NVS; ++j) {
+        const double u = kUs[i], v = kVs[j], f = (2 * v + u) / (v + 3);
+        double x[3], xu[3], xv[3], ex[3], exu[3], exv[3], n[3], w = SENT;
+        const double dfdv = (2 * (v + 3) - (2 * v + u)) / ((v + 3) * (v + 3));
+        ex2_expected(u, f, ex, exu, exv);
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, Sf, u, v, x, xu, xv, n), CYC_OK);
+        CHECK(close3(x, ex, 1e-11));
+        exv[0] *= dfdv;
+        exv[1] *= dfdv;
+        exv[2] *= dfdv;
+        CHECK(close3(xv, exv, 1e-10));
+        CHECK(finite_all(xu, 3) && finite_all(n, 3));
+        CHECK(close1(norm3(n), 1.0, TOL));
+        CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, Sf, u, ex, &w), CYC_OK);
+        CHECK(close1(w, v, 1e-8));
+      }
+    /* The generator p1(u) (f = infinity) is at the finite v = -3. */
+    for (i = 0; i < NUS && Sf; ++i) {
+      const double p1[3] = {kUs[i], 0, 0};
+      double x[3], w = SENT;
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, Sf, kUs[i], -3.0, x, NULL, NULL, NULL), CYC_OK);
+      CHECK(close3(x, p1, TOL));
+      CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, Sf, kUs[i], p1, &w), CYC_OK);
+      CHECK(close1(w, -3.0, 1e-9));
+    }
+    cyc_surface_destroy(ctx, Sf);
+  }
+  ex2_destroy(ctx, &e);
+}
+
+/* ---- Example 3 (PRRS). */
+
+typedef struct ex3 {
+  cyc_curve* p1;
+  cyc_curve* p2;
+  cyc_curve* p3;
+  cyc_surface* S;
+} ex3;
+
+static void ex3_create(cyc_context* ctx, ex3* e) {
+  const double O[3] = {0, 0, 0}, X1[3] = {1, 0, 0};
+  e->p1 = e->p2 = e->p3 = NULL;
+  e->S = NULL;
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, O, X1, &e->p1), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, kP2, &e->p2), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, kP3, &e->p3), CYC_OK);
+  CHECK_STATUS(ctx, cyc_prrs_create(ctx, e->p1, e->p2, e->p3, NULL, -1.0, 1.0, &e->S), CYC_OK);
+}
+
+static void ex3_destroy(cyc_context* ctx, ex3* e) {
+  cyc_surface_destroy(ctx, e->S);
+  cyc_curve_destroy(ctx, e->p1);
+  cyc_curve_destroy(ctx, e->p2);
+  cyc_curve_destroy(ctx, e->p3);
+}
+
+static void test_example3(cyc_context* ctx) {
+  ex3 e;
+  size_t i, j;
+  int kind = -1;
+  double u0 = SENT, u1 = SENT;
+  ex3_create(ctx, &e);
+  if (!e.S) return;
+
+  CHECK_STATUS(ctx, cyc_surface_kind(ctx, e.S, &kind), CYC_OK);
+  CHECK(kind == CYC_SURFACE_PRRS);
+  CHECK_STATUS(ctx, cyc_surface_domain(ctx, e.S, &u0, &u1), CYC_OK);
+  CHECK(u0 == -1.0 && u1 == 1.0);
+
+  for (i = 0; i < NUS; ++i)
+    for (j = 0; j < NVS; ++j) {
+      const double u = kUs[i], v = kVs[j];
+      double x[3], xu[3], xv[3], n[3], ex[3], exu[3], exv[3], en[3];
+      fill(x, 3);
+      fill(xu, 3);
+      fill(xv, 3);
+      fill(n, 3);
+      ex3_expected(u, v, ex, exu, exv);
+      cross3(exu, exv, en);
+      if (close3(ex, kP2, 1e-12) || close3(ex, kP3, 1e-12)) {
+        /* (u, v) = (0, 0) is P3: the normal is undefined there. */
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, x, xu, xv, n), CYC_E_SINGULAR_POINT);
+        CHECK(untouched(x, 3) && untouched(xu, 3) && untouched(xv, 3) && untouched(n, 3));
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, x, xu, xv, NULL), CYC_OK);
+        CHECK(close3(x, ex, TOL));
+        CHECK(close3(xu, exu, TOL));
+        CHECK(close3(xv, exv, TOL));
+        continue;
+      }
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v, x, xu, xv, n), CYC_OK);
+      CHECK(close3(x, ex, TOL));
+      CHECK(close3(xu, exu, TOL));
+      CHECK(close3(xv, exv, TOL));
+      if (norm3(en) > 0) {
+        const double l = norm3(en);
+        en[0] /= l;
+        en[1] /= l;
+        en[2] /= l;
+        CHECK(close3(n, en, 1e-10));
+      }
+      CHECK(close1(norm3(n), 1.0, TOL));
+    }
+
+  /* Every circle passes through p1(u), P2 and P3. */
+  for (i = 0; i < NUS; ++i) {
+    const double u = kUs[i];
+    const double p1[3] = {u, 0, 0};
+    const double nexp[3] = {-2, 1, -2 * u}; /* (p1 - p2) x (p1 - p3) */
+    const double* pts[3];
+    double d[3], t[3];
+    int k;
+    cyc_circle ci;
+    cyc_sphere sp;
+    pts[0] = p1;
+    pts[1] = kP2;
+    pts[2] = kP3;
+    fill_circle(&ci);
+    CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, u, &ci), CYC_OK);
+    CHECK(finite_all(ci.center, 3) && finite_all(ci.normal, 3) && isfinite(ci.radius2));
+    CHECK(close1(norm3(ci.normal), 1.0, TOL));
+    cross3(ci.normal, nexp, t);
+    CHECK(norm3(t) <= 1e-12 * norm3(nexp));
+    for (k = 0; k < 3; ++k) {
+      sub3(pts[k], ci.center, d);
+      CHECK(close1(dot3(d, d), ci.radius2, 1e-11));
+      CHECK(fabs(dot3(d, ci.normal)) <= 1e-11 * sqrt(ci.radius2));
+    }
+    /* Ringed data: the circle's center and radius, n = (p1-p2) x (p1-p3). */
+    {
+      double c[3], n[3], rho2 = SENT, rr = SENT;
+      const double h = 1e-5;
+      cyc_circle a, b;
+      fill(c, 3);
+      fill(n, 3);
+      CHECK_STATUS(ctx, cyc_surface_ringed_data(ctx, e.S, u, c, n, &rho2, &rr), CYC_OK);
+      CHECK(close3(c, ci.center, 1e-11));
+      CHECK(close3(n, nexp, TOL));
+      CHECK(close1(rho2, ci.radius2, 1e-11));
+      CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, u + h, &a), CYC_OK);
+      CHECK_STATUS(ctx, cyc_surface_circle(ctx, e.S, u - h, &b), CYC_OK);
+      CHECK(fabs(rr - (a.radius2 - b.radius2) / (4 * h)) <= 1e-6 * (1 + fabs(rr)));
+    }
+    /* Eq. (3): a sphere through the circle (or n . c' = 0). */
+    {
+      const int s = cyc_surface_ringed_sphere(ctx, e.S, u, &sp);
+      CHECK(s == CYC_OK || s == CYC_E_DEGENERATE_RINGED);
+      if (s == CYC_OK) {
+        CHECK(finite_all(sp.center, 3) && isfinite(sp.radius2));
+        for (k = 0; k < 3; ++k) {
+          sub3(pts[k], sp.center, d);
+          CHECK(close1(dot3(d, d), sp.radius2, 1e-10));
+        }
+      }
+    }
+    /* A ringed surface has no touching sphere. */
+    fill_sphere(&sp);
+    CHECK_STATUS(ctx, cyc_surface_sphere(ctx, e.S, u, &sp), CYC_E_NOT_CANAL);
+    CHECK(sphere_untouched(&sp));
+    /* The generator p1(u) is f = infinity. */
+    {
+      double w = SENT;
+      CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, u, p1, &w), CYC_OK);
+      CHECK(w == HUGE_VAL);
+    }
+  }
+  {
+    cyc_sphere sp;
+    fill_sphere(&sp);
+    CHECK_STATUS(ctx, cyc_surface_sphere(ctx, e.S, NAN, &sp), CYC_E_NOT_CANAL);
+    CHECK(sphere_untouched(&sp));
+  }
+
+  /* Canal test: a finite residual and a consistent verdict. */
+  {
+    double res = SENT;
+    int is_canal = -7;
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 0.0, &res, &is_canal), CYC_OK);
+    CHECK(isfinite(res) && res >= 0);
+    CHECK(is_canal == (res <= 1e-9));
+    /* ERRATA (SPEC.md section 7): PRRS(line, point, point) is canal. */
+    CHECK(is_canal == 1);
+    is_canal = -7;
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 1e300, NULL, &is_canal), CYC_OK);
+    CHECK(is_canal == 1);
+  }
+
+  /* The singular points P2 (v = 5 - u) and P3 on every circle. */
+  {
+    const double us[2] = {0.5, -0.25};
+    double v2[2] = {SENT, SENT}, v3[2] = {SENT, SENT};
+    for (i = 0; i < 2; ++i) {
+      const double u = us[i];
+      double x[3], xu[3], xv[3], n[3], ex[3], exu[3], exv[3];
+      CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, u, kP2, &v2[i]), CYC_OK);
+      CHECK(close1(v2[i], 5 - u, 1e-12));
+      CHECK_STATUS(ctx, cyc_surface_parameter_of(ctx, e.S, u, kP3, &v3[i]), CYC_OK);
+      CHECK(isfinite(v3[i]));
+      /* The points themselves are fine. */
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v2[i], x, NULL, NULL, NULL), CYC_OK);
+      CHECK(close3(x, kP2, 1e-12));
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v3[i], x, xu, xv, NULL), CYC_OK);
+      CHECK(close3(x, kP3, 1e-12));
+      ex3_expected(u, v3[i], ex, exu, exv);
+      CHECK(close3(ex, kP3, 1e-12));
+      /* The normal is not. */
+      fill(x, 3);
+      fill(xu, 3);
+      fill(xv, 3);
+      fill(n, 3);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v2[i], x, xu, xv, n), CYC_E_SINGULAR_POINT);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v3[i], x, xu, xv, n), CYC_E_SINGULAR_POINT);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, v2[i], NULL, NULL, NULL, n),
+                   CYC_E_SINGULAR_POINT);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, u, 5 - u, x, NULL, NULL, n),
+                   CYC_E_SINGULAR_POINT);
+      CHECK(untouched(x, 3) && untouched(xu, 3) && untouched(xv, 3) && untouched(n, 3));
+    }
+
+    /* Batch: singular normals written as (0,0,0) and counted. */
+    {
+      enum { NB = 6 };
+      const double uv[2 * NB] = {us[0], v2[0], us[0], 1.0,   us[0], v3[0],
+                                 us[1], -2.0,  us[1], v3[1], us[1], v2[0]};
+      double P[3 * NB], NO[4 * NB], DU[3 * NB];
+      size_t singular = 777, k;
+      fill(P, 3 * NB);
+      fill(NO, 4 * NB);
+      fill(DU, 3 * NB);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 2, NB, buf(P, NB, 3), buf(DU, NB, 3),
+                                          buf(NULL, 0, 0), buf(NO, NB, 4), &singular),
+                   CYC_OK);
+      CHECK(singular == 3);
+      CHECK(finite_all(P, 3 * NB) && finite_all(DU, 3 * NB));
+      for (k = 0; k < NB; ++k) {
+        const int sing = k == 0 || k == 2 || k == 4;
+        CHECK(NO[4 * k + 3] == SENT);
+        if (sing) {
+          CHECK(equal3(NO + 4 * k, 0, 0, 0));
+        } else {
+          double x[3], xu[3], xv[3], n[3];
+          CHECK(finite_all(NO + 4 * k, 3) && close1(norm3(NO + 4 * k), 1.0, TOL));
+          ex3_expected(uv[2 * k], uv[2 * k + 1], x, xu, xv);
+          cross3(xu, xv, n);
+          CHECK(fabs(dot3(n, NO + 4 * k)) >= (1 - 1e-9) * norm3(n));
+        }
+      }
+      CHECK(close3(P, kP2, 1e-12) && close3(P + 6, kP3, 1e-12) && close3(P + 12, kP3, 1e-12));
+      /* With singular = NULL. */
+      fill(NO, 4 * NB);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 2, NB, buf(NULL, 0, 0), buf(NULL, 0, 0),
+                                          buf(NULL, 0, 0), buf(NO, NB, 4), NULL),
+                   CYC_OK);
+      CHECK(equal3(NO, 0, 0, 0) && equal3(NO + 8, 0, 0, 0) && equal3(NO + 16, 0, 0, 0));
+      /* Not wanted: no normal, no singular point. */
+      singular = 777;
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_batch(ctx, e.S, uv, 2, NB, buf(P, NB, 3), buf(NULL, 0, 0),
+                                          buf(NULL, 0, 0), buf(NULL, 0, 0), &singular),
+                   CYC_OK);
+      CHECK(singular == 0);
+    }
+
+    /* Grid: rows u = us[0], us[1]; columns v2(us[0]), v3(us[0]), 1, -2. */
+    {
+      enum { GU = 2, GV = 4, GN = GU * GV };
+      const double vs[GV] = {v2[0], v3[0], 1.0, -2.0};
+      double P[3 * GN], NO[3 * GN], DV[3 * GN];
+      size_t singular = 777, k;
+      fill(P, 3 * GN);
+      fill(NO, 3 * GN);
+      fill(DV, 3 * GN);
+      CHECK_STATUS(ctx,
+                   cyc_surface_eval_grid(ctx, e.S, us, GU, vs, GV, buf(P, GN, 3), buf(NULL, 0, 0),
+                                         buf(DV, GN, 3), buf(NO, GN, 3), &singular),
+                   CYC_OK);
+      CHECK(singular == 2);
+      CHECK(finite_all(P, 3 * GN) && finite_all(NO, 3 * GN) && finite_all(DV, 3 * GN));
+      CHECK(equal3(NO, 0, 0, 0) && equal3(NO + 3, 0, 0, 0));
+      for (k = 2; k < GN; ++k) CHECK(close1(norm3(NO + 3 * k), 1.0, TOL));
+      CHECK(close3(P, kP2, 1e-12) && close3(P + 3, kP3, 1e-12));
+      for (k = 0; k < GN; ++k) {
+        double x[3], xv[3];
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, us[k / GV], vs[k % GV], x, NULL, xv, NULL),
+                     CYC_OK);
+        CHECK(close3(P + 3 * k, x, 1e-15) && close3(DV + 3 * k, xv, 1e-15));
+      }
+      /* A failing grid writes no singular count either. */
+      {
+        const double vbad[GV] = {v2[0], v3[0], NAN, -2.0};
+        fill(P, 3 * GN);
+        fill(NO, 3 * GN);
+        singular = 777;
+        CHECK_STATUS(
+            ctx,
+            cyc_surface_eval_grid(ctx, e.S, us, GU, vbad, GV, buf(P, GN, 3), buf(NULL, 0, 0),
+                                  buf(NULL, 0, 0), buf(NO, GN, 3), &singular),
+            CYC_E_NOT_FINITE);
+        CHECK(untouched(P, 3 * GN) && untouched(NO, 3 * GN) && singular == 777);
+      }
+    }
+  }
+
+  /* ---- PRRS with a circle parameter f = v + u: x_f(u, v) = x(u, v + u). */
+  {
+    cyc_mobius m;
+    cyc_surface* Sf = NULL;
+    memset(&m, 0, sizeof m);
+    m.degree = 1;
+    m.alpha[0] = 1;
+    m.beta[1] = 1;
+    m.delta[0] = 1;
+    CHECK_STATUS(ctx, cyc_prrs_create(ctx, e.p1, e.p2, e.p3, &m, -1, 1, &Sf), CYC_OK);
+    for (i = 0; i < NUS && Sf; ++i)
+      for (j = 0; j + 1 < NVS; ++j) {
+        const double u = kUs[i], v = kVs[j];
+        double x[3], xu[3], xv[3], ex[3], exu[3], exv[3];
+        ex3_expected(u, v + u, ex, exu, exv);
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, Sf, u, v, x, xu, xv, NULL), CYC_OK);
+        CHECK(close3(x, ex, 1e-11));
+        CHECK(close3(xv, exv, 1e-10));
+        /* x_u of x(u, v + u) is x_u + x_v. */
+        exu[0] += exv[0];
+        exu[1] += exv[1];
+        exu[2] += exv[2];
+        CHECK(close3(xu, exu, 1e-10));
+      }
+    cyc_surface_destroy(ctx, Sf);
+  }
+  ex3_destroy(ctx, &e);
+}
+
+/* ---- Construction errors. */
+static void test_construction_errors(cyc_context* ctx) {
+  const double O[3] = {0, 0, 0}, X1[3] = {1, 0, 0}, Y1[3] = {0, 1, 0}, Y2[3] = {0, 2, 0};
+  const double Z1[3] = {0, 0, 1}, P[3] = {0, 1, 1};
+  cyc_curve *a = NULL, *b = NULL, *c = NULL, *pt = NULL, *le = NULL, *le2 = NULL, *q = NULL,
+            *ex2p2 = NULL, *ex3p3 = NULL;
+  const double c2[6] = {0, 0, 1, 2, 1, 0};
+  const double quad[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0}; /* (u, u^2, 0): p'(0) != 0 */
+  const double cusp[9] = {0, 0, 0, 0, 0, 0, 1, 1, 0}; /* (u^2, u^2, 0): p'(0) = 0 */
+  cyc_surface* S = NULL;
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, O, X1, &a), CYC_OK);  /* (u,0,0) */
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, Y1, X1, &b), CYC_OK); /* (u,1,0) */
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, Y2, X1, &c), CYC_OK); /* (u,2,0) */
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, P, &pt), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_line_element(ctx, P, Z1, &le), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_line_element(ctx, O, Y1, &le2), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, cusp, 3, &q), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, c2, 3, &ex2p2), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, kP3, &ex3p3), CYC_OK);
+
+  /* PRCS: parallel normal planes (Remark 1) -> dependent planes. */
+  SURFACE_FAILS(ctx, CYC_E_DEPENDENT_PLANES, cyc_prcs_create(ctx, a, b, NULL, -1, 1, &out_));
+  CHECK(strstr(cyc_context_last_error(ctx), "u = ") != NULL); /* names the u */
+  /* Two line elements: M and N constant, dependent. */
+  SURFACE_FAILS(ctx, CYC_E_DEPENDENT_PLANES, cyc_prcs_create(ctx, le, le2, NULL, -1, 1, &out_));
+  /* A point is not a PRCS input. */
+  SURFACE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_prcs_create(ctx, a, pt, NULL, -1, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_prcs_create(ctx, pt, a, NULL, -1, 1, &out_));
+  /* p'(0) = 0 inside the domain. */
+  SURFACE_FAILS(ctx, CYC_E_ZERO_TANGENT, cyc_prcs_create(ctx, q, ex2p2, NULL, -1, 1, &out_));
+  /* Domains. */
+  SURFACE_FAILS(ctx, CYC_E_BAD_DOMAIN, cyc_prcs_create(ctx, a, ex2p2, NULL, 1, -1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_BAD_DOMAIN, cyc_prcs_create(ctx, a, ex2p2, NULL, 0.5, 0.5, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_prcs_create(ctx, a, ex2p2, NULL, NAN, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_prcs_create(ctx, a, ex2p2, NULL, 0, INFINITY, &out_));
+  SURFACE_FAILS(ctx, CYC_E_BAD_DOMAIN, cyc_prrs_create(ctx, a, pt, ex3p3, NULL, 1, 0, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_prrs_create(ctx, a, pt, ex3p3, NULL, 0, NAN, &out_));
+  /* NULL arguments. */
+  SURFACE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_prcs_create(ctx, NULL, ex2p2, NULL, -1, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_prcs_create(ctx, a, NULL, NULL, -1, 1, &out_));
+  CHECK_STATUS(ctx, cyc_prcs_create(ctx, a, ex2p2, NULL, -1, 1, NULL), CYC_E_NULL_ARGUMENT);
+  SURFACE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_prcs_create(NULL, a, ex2p2, NULL, -1, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NULL_ARGUMENT,
+                cyc_prrs_create(ctx, NULL, pt, ex3p3, NULL, -1, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_prrs_create(ctx, a, NULL, ex3p3, NULL, -1, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_NULL_ARGUMENT, cyc_prrs_create(ctx, a, pt, NULL, NULL, -1, 1, &out_));
+  CHECK_STATUS(ctx, cyc_prrs_create(ctx, a, pt, ex3p3, NULL, -1, 1, NULL), CYC_E_NULL_ARGUMENT);
+  SURFACE_FAILS(NULL, CYC_E_NULL_ARGUMENT, cyc_prrs_create(NULL, a, pt, ex3p3, NULL, -1, 1, &out_));
+
+  /* PRRS: (u,0,0), (u,1,0), (u,2,0) are collinear for every u. */
+  SURFACE_FAILS(ctx, CYC_E_COLLINEAR_POINTS, cyc_prrs_create(ctx, a, b, c, NULL, -1, 1, &out_));
+  /* Three points give no surface; line elements are not PRRS inputs. */
+  SURFACE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_prrs_create(ctx, pt, ex3p3, pt, NULL, -1, 1, &out_));
+  SURFACE_FAILS(ctx, CYC_E_INVALID_ARGUMENT,
+                cyc_prrs_create(ctx, a, le, ex3p3, NULL, -1, 1, &out_));
+
+  /* A pole of a rational input inside the domain (SPEC.md section 5:
+   * "CYC_E_NUMERICAL_OVERFLOW (e.g. a pole of a rational input in the
+   * domain)"), not a zero tangent or collinear points. */
+  {
+    const double rc[8] = {1, 0, 0, 0, 0, 1, 0, 1}; /* (1, u, 0) / u */
+    const double bctrl[9] = {0, 0, 0, 1, 1, 0, 2, 0, 0};
+    const double bw[3] = {1, -1, 1}; /* w = (1 - 2t)^2 */
+    cyc_curve* rat = NULL;
+    cyc_curve* bz = NULL;
+    CHECK_STATUS(ctx, cyc_curve_create_rational(ctx, 1, rc, 4, &rat), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_create_bezier(ctx, 2, bctrl, 3, bw, 0, 1, &bz), CYC_OK);
+    SURFACE_FAILS(ctx, CYC_E_NUMERICAL_OVERFLOW,
+                  cyc_prcs_create(ctx, rat, ex2p2, NULL, -1, 1, &out_));
+    SURFACE_FAILS(ctx, CYC_E_NUMERICAL_OVERFLOW,
+                  cyc_prcs_create(ctx, bz, ex2p2, NULL, 0, 1, &out_));
+    SURFACE_FAILS(ctx, CYC_E_NUMERICAL_OVERFLOW,
+                  cyc_prrs_create(ctx, rat, pt, ex3p3, NULL, -1, 1, &out_));
+    SURFACE_FAILS(ctx, CYC_E_NUMERICAL_OVERFLOW,
+                  cyc_prrs_create(ctx, bz, pt, ex3p3, NULL, 0, 1, &out_));
+    /* Off the pole the surface exists; at the pole evaluation fails. */
+    CHECK_STATUS(ctx, cyc_prcs_create(ctx, rat, ex2p2, NULL, 0.5, 1, &S), CYC_OK);
+    if (S) {
+      double x[3], n[3];
+      cyc_circle ci;
+      fill(x, 3);
+      fill(n, 3);
+      fill_circle(&ci);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.75, 0.3, x, NULL, NULL, n), CYC_OK);
+      CHECK(finite_all(x, 3) && finite_all(n, 3));
+      fill(x, 3);
+      fill(n, 3);
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.0, 0.3, x, NULL, NULL, n),
+                   CYC_E_NUMERICAL_OVERFLOW);
+      CHECK_STATUS(ctx, cyc_surface_circle(ctx, S, 0.0, &ci), CYC_E_NUMERICAL_OVERFLOW);
+      CHECK(untouched(x, 3) && untouched(n, 3) && circle_untouched(&ci));
+      cyc_surface_destroy(ctx, S);
+      S = NULL;
+    }
+    cyc_curve_destroy(ctx, rat);
+    cyc_curve_destroy(ctx, bz);
+  }
+
+  /* Circle parameters. */
+  {
+    cyc_mobius m = identity_mobius();
+    m.degree = 16;
+    SURFACE_FAILS(ctx, CYC_E_DEGREE_TOO_HIGH, cyc_prcs_create(ctx, a, ex2p2, &m, -1, 1, &out_));
+    SURFACE_FAILS(ctx, CYC_E_DEGREE_TOO_HIGH, cyc_prrs_create(ctx, a, pt, ex3p3, &m, -1, 1, &out_));
+    m.degree = -1;
+    SURFACE_FAILS(ctx, CYC_E_INVALID_ARGUMENT, cyc_prcs_create(ctx, a, ex2p2, &m, -1, 1, &out_));
+    m = identity_mobius();
+    m.beta[0] = NAN;
+    SURFACE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_prcs_create(ctx, a, ex2p2, &m, -1, 1, &out_));
+    m.beta[0] = INFINITY;
+    SURFACE_FAILS(ctx, CYC_E_NOT_FINITE, cyc_prrs_create(ctx, a, pt, ex3p3, &m, -1, 1, &out_));
+    memset(&m, 0, sizeof m); /* f = 0/0 */
+    SURFACE_FAILS(ctx, CYC_E_DEGENERATE_CIRCLE_PARAMETER,
+                  cyc_prcs_create(ctx, a, ex2p2, &m, -1, 1, &out_));
+    /* f = (v + 1)/(v + 1) = 1 is constant: not a Mobius map. */
+    m.alpha[0] = m.beta[0] = m.gamma[0] = m.delta[0] = 1;
+    SURFACE_FAILS(ctx, CYC_E_DEGENERATE_CIRCLE_PARAMETER,
+                  cyc_prcs_create(ctx, a, ex2p2, &m, -1, 1, &out_));
+    SURFACE_FAILS(ctx, CYC_E_DEGENERATE_CIRCLE_PARAMETER,
+                  cyc_prrs_create(ctx, a, pt, ex3p3, &m, -1, 1, &out_));
+    /* f = (u v) / 1: degenerate at u = 0 inside [-1, 1], fine on [0.5, 1]. */
+    m = identity_mobius();
+    m.degree = 1;
+    m.alpha[0] = 0;
+    m.alpha[1] = 1;
+    SURFACE_FAILS(ctx, CYC_E_DEGENERATE_CIRCLE_PARAMETER,
+                  cyc_prcs_create(ctx, a, ex2p2, &m, -1, 1, &out_));
+    CHECK_STATUS(ctx, cyc_prcs_create(ctx, a, ex2p2, &m, 0.5, 1, &S), CYC_OK);
+    cyc_surface_destroy(ctx, S);
+    S = NULL;
+  }
+
+  /* Valid mixed inputs: a line and a line element (PRCS), a quadratic and
+   * two points (PRRS). */
+  {
+    cyc_curve* quadc = NULL;
+    CHECK_STATUS(ctx, cyc_prcs_create(ctx, a, le, NULL, -1, 1, &S), CYC_OK);
+    if (S) {
+      double x[3], n[3], d[3], res = SENT;
+      int is_canal = -7;
+      cyc_sphere sp;
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.25, 0.5, x, NULL, NULL, n), CYC_OK);
+      CHECK(finite_all(x, 3) && close1(norm3(n), 1.0, TOL));
+      CHECK_STATUS(ctx, cyc_surface_sphere(ctx, S, 0.25, &sp), CYC_OK);
+      /* The sphere passes through p1(u) and the line element's point, and its
+       * center lies on the normal planes x = u and z = 1. */
+      CHECK(close1(sp.center[0], 0.25, TOL) && close1(sp.center[2], 1.0, TOL));
+      sub3(P, sp.center, d);
+      CHECK(close1(dot3(d, d), sp.radius2, TOL));
+      sub3(x, sp.center, d);
+      CHECK(close1(dot3(d, d), sp.radius2, 1e-11));
+      CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, S, 0, &res, &is_canal), CYC_OK);
+      CHECK(is_canal == 1);
+      cyc_surface_destroy(ctx, S);
+      S = NULL;
+    }
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, quad, 3, &quadc), CYC_OK);
+    CHECK_STATUS(ctx, cyc_prrs_create(ctx, quadc, pt, ex3p3, NULL, -1, 1, &S), CYC_OK);
+    if (S) {
+      double x[3], xu[3], xv[3];
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.5, 0.5, x, xu, xv, NULL), CYC_OK);
+      CHECK(finite_all(x, 3) && finite_all(xu, 3) && finite_all(xv, 3));
+      cyc_surface_destroy(ctx, S);
+      S = NULL;
+    }
+    cyc_curve_destroy(ctx, quadc);
+  }
+
+  cyc_curve_destroy(ctx, a);
+  cyc_curve_destroy(ctx, b);
+  cyc_curve_destroy(ctx, c);
+  cyc_curve_destroy(ctx, pt);
+  cyc_curve_destroy(ctx, le);
+  cyc_curve_destroy(ctx, le2);
+  cyc_curve_destroy(ctx, q);
+  cyc_curve_destroy(ctx, ex2p2);
+  cyc_curve_destroy(ctx, ex3p3);
+}
+
+int main(void) {
+  counting_allocator ca;
+  cyc_allocator a;
+  cyc_context* ctx = NULL;
+
+  test_versions_and_names();
+  test_contexts();
+
+  /* Everything else runs on a context with the counting allocator. */
+  counting_init(&ca, -1);
+  a = counting_allocator_of(&ca);
+  CHECK(cyc_context_create(&a, &ctx) == CYC_OK);
+  if (ctx) {
+    CHECK(cyc_context_last_status(ctx) == CYC_OK);
+    test_error_handler(ctx);
+    test_curves(ctx);
+    test_example2(ctx);
+    test_example3(ctx);
+    test_construction_errors(ctx);
+    cyc_context_destroy(ctx);
+  }
+  CHECK(ca.allocs > 10);
+  CHECK(ca.allocs == ca.frees);
+  CHECK(ca.bad_free == 0);
+  CHECK(ca.bad_alignment == 0);
+  CHECK(ca.max_alignment >= 1 && ca.max_alignment <= 64);
+
+  printf("%d passed, %d failed\n", g_passed, g_failed);
+  return g_failed != 0;
+}

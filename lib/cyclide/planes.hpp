@@ -28,6 +28,17 @@ double relative_determinant(const ThreePlanes<S>& P) {
   return std::abs(n[0].dot(n[1].cross(n[2]))) / den;
 }
 
+// False if a plane is not finite (a pole of a rational input at this u).
+template <class S>
+bool planes_finite(const ThreePlanes<S>& P) {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(double(value_of(P.b[i])))) return false;
+    for (int j = 0; j < 3; ++j)
+      if (!std::isfinite(double(value_of(P.n[i][j])))) return false;
+  }
+  return true;
+}
+
 template <class S>
 Vec3<S> intersect(const ThreePlanes<S>& P) {
   const Vec3<S> c23 = P.n[1].cross(P.n[2]);

@@ -48,6 +48,7 @@ ThreePlanes<Taylor<double, K>> prcs_planes(const RationalCurve& p1,
 // dependent planes (Remark 1: e.g. two lines of curvature).
 template <class S>
 Status check_prcs_planes(const ThreePlanes<S>& T, double tangent_scale) {
+  if (!planes_finite(T)) return Status::numerical_overflow;  // a pole
   for (int i = 0; i < 2; ++i) {
     Vec3d n(value_of(T.n[i][0]), value_of(T.n[i][1]), value_of(T.n[i][2]));
     if (!(n.norm() > kZeroTangentTol * tangent_scale)) return Status::zero_tangent;

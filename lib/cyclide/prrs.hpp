@@ -39,6 +39,7 @@ ThreePlanes<Taylor<double, K>> prrs_planes(const RationalCurve& p1,
 // of the angle at p1: small means the three points are (nearly) collinear.
 template <class S>
 Status check_prrs_planes(const ThreePlanes<S>& T) {
+  if (!planes_finite(T)) return Status::numerical_overflow;  // a pole
   if (!(relative_determinant(T) > kDependentPlanesTol)) return Status::collinear_points;
   return Status::ok;
 }

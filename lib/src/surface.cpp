@@ -1,5 +1,6 @@
 #include "cyclide/surface.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 namespace cyclide {
@@ -240,7 +241,10 @@ Status Surface::parameter_of(double u, const Vec3d& X, double& v) const {
   const Vec3d e1 = (V.p - G.center).normalized();
   const Vec3d e2 = V.a.normalized().cross(e1);
   const Vec3d w = X - G.center;
-  const double theta = std::atan2(w.dot(e2), w.dot(e1));
+  const double sn = w.dot(e2), cs = w.dot(e1);
+  // X on the generator's ray up to rounding: theta = 0 exactly (f = infinity).
+  const double noise = 16 * DBL_EPSILON * (X.norm() + G.center.norm() + V.p.norm());
+  const double theta = (cs > 0 && std::abs(sn) <= noise) ? 0.0 : std::atan2(sn, cs);
   // q = W + G a rotates by theta with tan(theta/2) = G |a| / W, so
   // f = W / G = |a| cos(theta/2) / sin(theta/2) (eq. (13)); invert the Mobius map.
   const double fn = V.a.norm() * std::cos(theta / 2), fd = std::sin(theta / 2);
