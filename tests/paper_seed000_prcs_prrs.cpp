@@ -345,3 +345,15 @@ TEST(Degenerate, StatusesNamedByThePaper) {
                       -1, S),
             Status::bad_domain);
 }
+
+// RapidCheck counterexample kept as a named regression: PRRS(line, P2, P3) is
+// canal (Appendix B) and eq. (2)'s residual must stay ~0 where n.c' = 0.
+TEST(Regression, CanalTestWhereNDotCPrimeVanishes) {
+  Surface S;
+  ASSERT_EQ(make_prrs(line({0.75, -0.75, 1.5}, {1, 0, 0}), point({-1.25, -1.375, 1}),
+                      point({1.75, -1.75, -1.25}), nullptr, -0.5, 0, S),
+            Status::ok);
+  double res = 1;
+  ASSERT_EQ(S.canal_test(res), Status::ok);
+  EXPECT_LE(res, 1e-12);
+}

@@ -31,7 +31,13 @@ struct RationalCurve {
   Vec3d tangent = Vec3d::Zero();  // line elements only
 
   int degree() const;
-  bool is_polynomial() const { return w.deg == 0; }
+  // True if the weight is constant (power form: degree 0; Bernstein form:
+  // all weights equal).
+  bool is_polynomial() const {
+    for (int k = 1; k <= w.deg; ++k)
+      if (w.c[k] != (bernstein ? w.c[0] : 0.0)) return false;
+    return true;
+  }
 
   // p(u + h) as a Taylor series to order N: the point and its derivatives
   // p^(k)(u) / k!. Constant kinds have zero derivatives (ERRATA: a line

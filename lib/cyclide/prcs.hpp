@@ -16,28 +16,30 @@ inline namespace v0 {
 
 // Normal of the normal plane of a PRCS input at u, as a series: p'(u), or
 // the constant tangent of a line element (its derivatives are zero).
-template <int N>
-Vec3<Taylor<double, N>> normal_plane_normal(const RationalCurve& c,
-                                            const Vec3<Taylor<double, N + 1>>& P) {
+template <int N, class S>
+Vec3<Taylor<S, N>> normal_plane_normal(const RationalCurve& c,
+                                       const Vec3<Taylor<S, N + 1>>& P) {
   if (c.kind == CurveKind::line_element)
-    return {Taylor<double, N>(c.tangent.x()), Taylor<double, N>(c.tangent.y()),
-            Taylor<double, N>(c.tangent.z())};
+    return {Taylor<S, N>(S(c.tangent.x())), Taylor<S, N>(S(c.tangent.y())),
+            Taylor<S, N>(S(c.tangent.z()))};
   return derivative(P);
 }
 
 // The planes (8), (9), (10) at u as series of order K:
 //   M: p1' . X = p1' . p1,  N: p2' . X = p2' . p2,
 //   B: 2 (p1 - p2) . X = |p1|^2 - |p2|^2.
-template <int K>
-ThreePlanes<Taylor<double, K>> prcs_planes(const RationalCurve& p1,
-                                            const RationalCurve& p2, double u) {
+// Generic in the scalar S of u (double, or a Ceres Jet for derivatives
+// with respect to design parameters).
+template <int K, class S>
+ThreePlanes<Taylor<S, K>> prcs_planes(const RationalCurve& p1, const RationalCurve& p2,
+                                       const S& u) {
   const auto P1 = p1.taylor<K + 1>(u);
   const auto P2 = p2.taylor<K + 1>(u);
-  const Vec3<Taylor<double, K>> q1 = truncate<K>(P1), q2 = truncate<K>(P2);
-  ThreePlanes<Taylor<double, K>> T;
+  const Vec3<Taylor<S, K>> q1 = truncate<K>(P1), q2 = truncate<K>(P2);
+  ThreePlanes<Taylor<S, K>> T;
   T.n[0] = normal_plane_normal<K>(p1, P1);
   T.n[1] = normal_plane_normal<K>(p2, P2);
-  T.n[2] = Taylor<double, K>(2.0) * (q1 - q2);
+  T.n[2] = Taylor<S, K>(S(2.0)) * (q1 - q2);
   T.b[0] = T.n[0].dot(q1);
   T.b[1] = T.n[1].dot(q2);
   T.b[2] = q1.dot(q1) - q2.dot(q2);
@@ -58,9 +60,9 @@ Status check_prcs_planes(const ThreePlanes<S>& T, double tangent_scale) {
 }
 
 // Spine s(u) as a series of order K (needs p1, p2 to order K+1).
-template <int K>
-Status prcs_spine(const RationalCurve& p1, const RationalCurve& p2, double u,
-                  double tangent_scale, Vec3<Taylor<double, K>>& s) {
+template <int K, class S>
+Status prcs_spine(const RationalCurve& p1, const RationalCurve& p2, const S& u,
+                  double tangent_scale, Vec3<Taylor<S, K>>& s) {
   const auto T = prcs_planes<K>(p1, p2, u);
   if (Status st = check_prcs_planes(T, tangent_scale); st != Status::ok) return st;
   s = intersect(T);
@@ -68,10 +70,10 @@ Status prcs_spine(const RationalCurve& p1, const RationalCurve& p2, double u,
 }
 
 // The circle frame of PRCS at u to order N: o = s, a = s', p = p1.
-template <int N>
-Status prcs_frame(const RationalCurve& p1, const RationalCurve& p2, double u,
-                  double tangent_scale, CircleFrame<Taylor<double, N>>& F) {
-  Vec3<Taylor<double, N + 1>> s;
+template <int N, class S>
+Status prcs_frame(const RationalCurve& p1, const RationalCurve& p2, const S& u,
+                  double tangent_scale, CircleFrame<Taylor<S, N>>& F) {
+  Vec3<Taylor<S, N + 1>> s;
   if (Status st = prcs_spine<N + 1>(p1, p2, u, tangent_scale, s); st != Status::ok)
     return st;
   F.o = truncate<N>(s);

@@ -18,17 +18,16 @@ inline namespace v0 {
 // The planes (24), (25), (26) at u as series of order K:
 //   M: n . X = n . p1,  B1: 2 (p1 - p2) . X = |p1|^2 - |p2|^2,
 //   B2: 2 (p1 - p3) . X = |p1|^2 - |p3|^2.
-template <int K>
-ThreePlanes<Taylor<double, K>> prrs_planes(const RationalCurve& p1,
-                                            const RationalCurve& p2,
-                                            const RationalCurve& p3, double u) {
-  using S = Taylor<double, K>;
+template <int K, class S>
+ThreePlanes<Taylor<S, K>> prrs_planes(const RationalCurve& p1, const RationalCurve& p2,
+                                       const RationalCurve& p3, const S& u) {
+  using T_ = Taylor<S, K>;
   const auto q1 = p1.taylor<K>(u), q2 = p2.taylor<K>(u), q3 = p3.taylor<K>(u);
-  const Vec3<S> e2 = q1 - q2, e3 = q1 - q3;
-  ThreePlanes<S> T;
+  const Vec3<T_> e2 = q1 - q2, e3 = q1 - q3;
+  ThreePlanes<T_> T;
   T.n[0] = e2.cross(e3);
-  T.n[1] = S(2.0) * e2;
-  T.n[2] = S(2.0) * e3;
+  T.n[1] = T_(S(2.0)) * e2;
+  T.n[2] = T_(S(2.0)) * e3;
   T.b[0] = T.n[0].dot(q1);
   T.b[1] = q1.dot(q1) - q2.dot(q2);
   T.b[2] = q1.dot(q1) - q3.dot(q3);
@@ -44,9 +43,9 @@ Status check_prrs_planes(const ThreePlanes<S>& T) {
   return Status::ok;
 }
 
-template <int N>
+template <int N, class S>
 Status prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
-                  const RationalCurve& p3, double u, CircleFrame<Taylor<double, N>>& F) {
+                  const RationalCurve& p3, const S& u, CircleFrame<Taylor<S, N>>& F) {
   const auto T = prrs_planes<N>(p1, p2, p3, u);
   if (Status st = check_prrs_planes(T); st != Status::ok) return st;
   F.o = intersect(T);  // directrix c(u)

@@ -31,7 +31,8 @@ RingedData ringed_from_canal(const Vec3<Taylor<double, 2>>& s,
                              const Taylor<double, 2>& r2);
 
 // Eq. (2): |[(n.c')c' + rho rho' n'] x n| relative to
-// (|n.c'| |c'| + |rho rho'| |n'|) |n|; 0 means "canal at this u".
+// (|n| |c'|^2 + (|rho rho'| + rho^2 |n'|/|n|) |n'|) |n|, a bound of the terms
+// that does not cancel; 0 means "canal at this u".
 double canal_residual(const RingedData& R);
 
 // Eq. (3): the sphere (x - c)^2 - rho^2 - (2 rho rho'/(n.c')) n.(x - c) = 0,

@@ -10,6 +10,7 @@
 #include "cyclide/circle_family.hpp"
 #include "cyclide/config.hpp"
 #include "cyclide/curve.hpp"
+#include "cyclide/evaluator.hpp"
 #include "cyclide/prcs.hpp"
 #include "cyclide/prrs.hpp"
 #include "cyclide/ringed.hpp"
@@ -36,26 +37,12 @@ enum class SurfaceKind : int {
   prrs = 2,  // ringed surface from three curves (some may be points)
 };
 
-// Caller-owned strided output of 3-vectors: element i at data + i * stride.
-struct Strided3 {
-  double* data = nullptr;
-  std::size_t stride = 3;  // in doubles, >= 3
-  double* at(std::size_t i) const { return data + i * stride; }
-};
-
 // What an evaluation writes (null = not wanted).
 struct EvalOut {
   double* point = nullptr;
   double* du = nullptr;
   double* dv = nullptr;
   double* normal = nullptr;
-};
-
-// Per-u data the evaluator reuses across a row of a grid.
-struct CircleRow {
-  CircleQuadratic<Taylor<double, 1>> q1;  // with u-derivatives
-  CircleQuadratic<double> q0;             // values only
-  double inv_radius = 0;                  // canal: 1 / r(u)
 };
 
 class Surface {

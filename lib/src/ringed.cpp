@@ -49,8 +49,14 @@ RingedData ringed_from_canal(const Vec3<Taylor<double, 2>>& s,
 double canal_residual(const RingedData& R) {
   const double nc = R.n.dot(R.dc);
   const Vec3d E = nc * R.dc + R.rho_rho_prime * R.dn;
+  // The scale must not cancel: where n.c' = 0 on a canal surface also
+  // rho rho' = 0, and dividing rounding by rounding gave residuals ~1. Use
+  // |n| |c'| for |n.c'| and rho^2 |n'|/|n| as the natural size of rho rho'.
+  const double nn = R.n.norm();
+  if (!(nn > 0)) return 0.0;
   const double scale =
-      (std::abs(nc) * R.dc.norm() + std::abs(R.rho_rho_prime) * R.dn.norm()) * R.n.norm();
+      (nn * R.dc.squaredNorm() +
+       (std::abs(R.rho_rho_prime) + R.rho2 * R.dn.norm() / nn) * R.dn.norm()) * nn;
   if (!(scale > 0)) return 0.0;
   return E.cross(R.n).norm() / scale;
 }

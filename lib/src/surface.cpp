@@ -23,12 +23,13 @@ CircleFrame<double> values(const CircleFrame<Taylor<double, N>>& F) {
   return V;
 }
 
-CircleQuadratic<double> values(const CircleQuadratic<Taylor<double, 1>>& C) {
+// Coefficient i (0: value, 1: d/du) of a circle quadratic of series.
+CircleQuadratic<double> coefficient(const CircleQuadratic<Taylor<double, 1>>& C, int i) {
   CircleQuadratic<double> V;
-  for (int j = 0; j < 3; ++j) V.o[j] = C.o[j].c[0];
+  for (int j = 0; j < 3; ++j) V.o[j] = C.o[j].c[i];
   for (int k = 0; k < 3; ++k) {
-    for (int j = 0; j < 3; ++j) V.P[k][j] = C.P[k][j].c[0];
-    V.Q[k] = C.Q[k].c[0];
+    for (int j = 0; j < 3; ++j) V.P[k][j] = C.P[k][j].c[i];
+    V.Q[k] = C.Q[k].c[i];
   }
   return V;
 }
@@ -37,70 +38,50 @@ bool finite3(const Vec3d& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
-void put(double* dst, const Vec3d& v) {
-  dst[0] = v.x();
-  dst[1] = v.y();
-  dst[2] = v.z();
+using ChunkFn = void (*)(const CircleRow&, const double*, int, Chunk&);
+
+ChunkFn chunk_kernel(bool du, bool dv, bool normal, bool canal) {
+#define CYC_K(k) &eval_chunk<(k & 8) != 0, (k & 4) != 0, (k & 2) != 0, (k & 1) != 0>
+  static const ChunkFn table[16] = {CYC_K(0),  CYC_K(1),  CYC_K(2),  CYC_K(3),
+                                    CYC_K(4),  CYC_K(5),  CYC_K(6),  CYC_K(7),
+                                    CYC_K(8),  CYC_K(9),  CYC_K(10), CYC_K(11),
+                                    CYC_K(12), CYC_K(13), CYC_K(14), CYC_K(15)};
+#undef CYC_K
+  return table[(du ? 8 : 0) | (dv ? 4 : 0) | (normal ? 2 : 0) | (canal ? 1 : 0)];
 }
 
-// Everything one point can produce; `singular` when the ringed normal is
-// undefined. Returns numerical_overflow if any wanted value is not finite.
-struct PointResult {
-  Vec3d x, xu, xv, n;
-  bool singular = false;
-};
-
-// The smallest |x_u x x_v| relative to |x_u| |x_v| that still defines a normal.
-constexpr double kSingularTol = 1e-14;
-
-Status compute_point(const Surface& S, const CircleRow& r, double v, bool want_du,
-                     bool want_dv, bool want_normal, PointResult& out) {
-  const bool need_du = want_du || (want_normal && !S.is_canal_by_construction());
-  const bool need_dv = want_dv || (want_normal && !S.is_canal_by_construction());
-  PointResult R;
-  if (need_du) {
-    Vec3<Taylor<double, 1>> x, xv;
-    circle_point(r.q1, v, x, need_dv ? &xv : nullptr);
-    for (int j = 0; j < 3; ++j) {
-      R.x[j] = x[j].c[0];
-      R.xu[j] = x[j].c[1];
-      if (need_dv) R.xv[j] = xv[j].c[0];
-    }
-  } else {
-    Vec3d xv;
-    circle_point(r.q0, v, R.x, need_dv ? &xv : nullptr);
-    if (need_dv) R.xv = xv;
-  }
-  if (want_normal) {
-    if (S.is_canal_by_construction()) {
-      // Exact unit normal of a canal surface: (x - s) / r (seed 000 §2).
-      R.n = (R.x - r.q0.o) * r.inv_radius;
-    } else {
-      const Vec3d c = R.xu.cross(R.xv);
-      const double len = c.norm();
-      if (!(len > kSingularTol * R.xu.norm() * R.xv.norm()) || !(len > 0)) {
-        R.singular = true;
-        R.n.setZero();
-      } else {
-        R.n = c / len;
-      }
-    }
-  }
-  if (!finite3(R.x) || (want_du && !finite3(R.xu)) || (want_dv && !finite3(R.xv)) ||
-      (want_normal && !finite3(R.n)))
-    return Status::numerical_overflow;
-  out = R;
+// One point through the chunk kernel; singular_point for an undefined
+// normal, numerical_overflow (never expected, see SPEC §3) for non-finite
+// results. Nothing is written on error.
+Status eval_one(const Surface& S, const CircleRow& r, double v, const EvalOut& out,
+                bool zero_singular_normal, bool* singular) {
+  Chunk c;
+  chunk_kernel(out.du, out.dv, out.normal, S.is_canal_by_construction())(r, &v, 1, c);
+  const bool sing = out.normal && !S.is_canal_by_construction() && c.singular[0] != 0.0;
+  if (sing && !zero_singular_normal) return Status::singular_point;
+  double* dst[4] = {out.point, out.du, out.dv, out.normal};
+  const double(*src[4])[kChunk] = {c.x, c.xu, c.xv, c.n};
+  for (int b = 0; b < 4; ++b)
+    if (dst[b] && !finite3(Vec3d(src[b][0][0], src[b][1][0], src[b][2][0])))
+      return Status::numerical_overflow;
+  for (int b = 0; b < 4; ++b)
+    if (dst[b])
+      for (int j = 0; j < 3; ++j) dst[b][j] = src[b][j][0];
+  if (singular) *singular = sing;
   return Status::ok;
 }
 
-void write_point(const PointResult& R, const EvalOut& out) {
-  if (out.point) put(out.point, R.x);
-  if (out.du) put(out.du, R.xu);
-  if (out.dv) put(out.dv, R.xv);
-  if (out.normal) put(out.normal, R.n);
-}
-
 }  // namespace
+
+RowGridFn row_grid_kernel(bool du, bool dv, bool normal, bool canal) {
+#define CYC_K(k) &eval_row_grid<(k & 8) != 0, (k & 4) != 0, (k & 2) != 0, (k & 1) != 0>
+  static const RowGridFn table[16] = {CYC_K(0),  CYC_K(1),  CYC_K(2),  CYC_K(3),
+                                      CYC_K(4),  CYC_K(5),  CYC_K(6),  CYC_K(7),
+                                      CYC_K(8),  CYC_K(9),  CYC_K(10), CYC_K(11),
+                                      CYC_K(12), CYC_K(13), CYC_K(14), CYC_K(15)};
+#undef CYC_K
+  return table[(du ? 8 : 0) | (dv ? 4 : 0) | (normal ? 2 : 0) | (canal ? 1 : 0)];
+}
 
 Status Surface::row(double u, bool with_du, CircleRow& r) const {
   if (!input_ok(u)) return Status::not_finite;
@@ -109,14 +90,15 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
   if (with_du) {
     CircleFrame<Taylor<double, 1>> F;
     if (Status st = frame<1>(u, F); st != Status::ok) return st;
-    R.q1 = circle_quadratic(F);
-    R.q0 = values(R.q1);
+    const CircleQuadratic<Taylor<double, 1>> Q = circle_quadratic(F);
+    R.q = coefficient(Q, 0);
+    R.q_u = coefficient(Q, 1);
     d = values(F).p - values(F).o;
   } else {
     CircleFrame<Taylor<double, 0>> F;
     if (Status st = frame<0>(u, F); st != Status::ok) return st;
     const CircleFrame<double> V = values(F);
-    R.q0 = circle_quadratic(V);
+    R.q = circle_quadratic(V);
     d = V.p - V.o;
   }
   R.inv_radius = 1.0 / d.norm();  // d != 0 is checked by check_frame
@@ -126,13 +108,7 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
 
 Status Surface::eval_row(const CircleRow& r, double v, const EvalOut& out) const {
   if (!std::isfinite(v)) return Status::not_finite;
-  PointResult R;
-  if (Status st = compute_point(*this, r, v, out.du, out.dv, out.normal, R);
-      st != Status::ok)
-    return st;
-  if (R.singular) return Status::singular_point;
-  write_point(R, out);
-  return Status::ok;
+  return eval_one(*this, r, v, out, false, nullptr);
 }
 
 Status Surface::eval(double u, double v, const EvalOut& out) const {
@@ -140,39 +116,38 @@ Status Surface::eval(double u, double v, const EvalOut& out) const {
   const bool with_du = out.du || (out.normal && !is_canal_by_construction());
   CircleRow r;
   if (Status st = row(u, with_du, r); st != Status::ok) return st;
-  return eval_row(r, v, out);
+  return eval_one(*this, r, v, out, false, nullptr);
 }
+
+namespace {
+Status check_buffers(std::initializer_list<const Strided3*> bs) {
+  for (const Strided3* b : bs)
+    if (b->data && b->stride < 3) return Status::invalid_argument;
+  return Status::ok;
+}
+}  // namespace
 
 Status Surface::eval_grid(const double* us, std::size_t nu, const double* vs,
                           std::size_t nv, const Strided3& points, const Strided3& du,
                           const Strided3& dv, const Strided3& normals,
                           std::size_t* singular) const {
   if ((nu && !us) || (nv && !vs)) return Status::null_argument;
-  for (const Strided3* b : {&points, &du, &dv, &normals})
-    if (b->data && b->stride < 3) return Status::invalid_argument;
+  if (Status st = check_buffers({&points, &du, &dv, &normals}); st != Status::ok) return st;
   const bool with_du = du.data || (normals.data && !is_canal_by_construction());
   // Pass 1: validate every u and v; nothing is written if one fails. The
-  // frame bounds (kMaxFrameMagnitude, kMinAxisLength, normalized f) make
-  // every point of a valid row finite.
+  // frame bounds (SPEC §3) make every point of a valid row finite.
   for (std::size_t j = 0; j < nv; ++j)
     if (!std::isfinite(vs[j])) return Status::not_finite;
   CircleRow r;
   for (std::size_t i = 0; i < nu; ++i)
     if (Status st = row(us[i], with_du, r); st != Status::ok) return st;
-  // Pass 2: evaluate row by row, reusing the per-u circle quadratic.
+  // Pass 2: evaluate row by row with the kernel specialized for the outputs.
+  const RowGridFn kernel =
+      row_grid_kernel(du.data, dv.data, normals.data, is_canal_by_construction());
   std::size_t count = 0;
   for (std::size_t i = 0; i < nu; ++i) {
     row(us[i], with_du, r);
-    for (std::size_t j = 0; j < nv; ++j) {
-      const std::size_t k = i * nv + j;
-      PointResult R;
-      if (compute_point(*this, r, vs[j], du.data, dv.data, normals.data, R) != Status::ok)
-        return Status::internal_error;  // excluded by the bounds checked in pass 1
-      count += R.singular;
-      write_point(R, {points.data ? points.at(k) : nullptr, du.data ? du.at(k) : nullptr,
-                      dv.data ? dv.at(k) : nullptr,
-                      normals.data ? normals.at(k) : nullptr});
-    }
+    count += kernel(r, vs, nv, i * nv, points, du, dv, normals);
   }
   if (singular) *singular = count;
   return Status::ok;
@@ -184,28 +159,25 @@ Status Surface::eval_batch(const double* uv, std::size_t uv_stride, std::size_t 
                            std::size_t* singular) const {
   if (count && !uv) return Status::null_argument;
   if (uv_stride < 2) return Status::invalid_argument;
-  for (const Strided3* b : {&points, &du, &dv, &normals})
-    if (b->data && b->stride < 3) return Status::invalid_argument;
+  if (Status st = check_buffers({&points, &du, &dv, &normals}); st != Status::ok) return st;
   const bool with_du = du.data || (normals.data && !is_canal_by_construction());
-  for (int pass = 0; pass < 2; ++pass) {
-    std::size_t count_singular = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-      const double u = uv[k * uv_stride], v = uv[k * uv_stride + 1];
-      if (!std::isfinite(v)) return Status::not_finite;
-      CircleRow r;
-      if (Status st = row(u, with_du, r); st != Status::ok) return st;
-      PointResult R;
-      if (Status st = compute_point(*this, r, v, du.data, dv.data, normals.data, R);
-          st != Status::ok)
-        return pass == 0 ? st : Status::internal_error;
-      count_singular += R.singular;
-      if (pass == 1)
-        write_point(R, {points.data ? points.at(k) : nullptr, du.data ? du.at(k) : nullptr,
-                        dv.data ? dv.at(k) : nullptr,
-                        normals.data ? normals.at(k) : nullptr});
-    }
-    if (pass == 1 && singular) *singular = count_singular;
+  CircleRow r;
+  // Pass 1: validate (as in eval_grid); pass 2: evaluate and write.
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!std::isfinite(uv[k * uv_stride + 1])) return Status::not_finite;
+    if (Status st = row(uv[k * uv_stride], with_du, r); st != Status::ok) return st;
   }
+  std::size_t count_singular = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    row(uv[k * uv_stride], with_du, r);
+    bool sing = false;
+    const EvalOut out{points.data ? points.at(k) : nullptr, du.data ? du.at(k) : nullptr,
+                      dv.data ? dv.at(k) : nullptr, normals.data ? normals.at(k) : nullptr};
+    if (eval_one(*this, r, uv[k * uv_stride + 1], out, true, &sing) != Status::ok)
+      return Status::internal_error;  // excluded by the bounds validated in pass 1
+    count_singular += sing;
+  }
+  if (singular) *singular = count_singular;
   return Status::ok;
 }
 
