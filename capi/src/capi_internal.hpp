@@ -72,11 +72,16 @@ void release(H* h) {
 
 // The result of an entry point's body: a status and, on error, a message.
 struct Outcome {
-  int status = CYC_OK;
-  char text[CYC_ERROR_MESSAGE_SIZE] = {0};
+  int status;
+  char text[CYC_ERROR_MESSAGE_SIZE];  // only text up to its NUL is meaningful
 };
 
-inline Outcome ok() { return {}; }
+inline Outcome ok() {
+  Outcome o;  // the text buffer is not cleared: success has no message
+  o.status = CYC_OK;
+  o.text[0] = '\0';
+  return o;
+}
 
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
@@ -136,20 +141,23 @@ inline Outcome from_core_at(const char* fn, Status s, double u) {
 template <class Body>
 int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
   if (!ctx) return CYC_E_NULL_ARGUMENT;
-  Outcome o;
   try {
-    o = body();
+    const Outcome o = body();
+    ctx->last_status = o.status;
+    if (o.status == CYC_OK) {
+      ctx->message[0] = '\0';  // no 1 KiB copy on the hot path
+      return CYC_OK;
+    }
+    std::memcpy(ctx->message, o.text, std::strlen(o.text) + 1);
   } catch (const std::bad_alloc&) {
-    o = fail(CYC_E_OUT_OF_MEMORY, "%s: out of memory", fn);
+    ctx->last_status = CYC_E_OUT_OF_MEMORY;
+    std::snprintf(ctx->message, sizeof ctx->message, "%s: out of memory", fn);
   } catch (...) {
-    o = fail(CYC_E_INTERNAL, "%s: unexpected exception", fn);
+    ctx->last_status = CYC_E_INTERNAL;
+    std::snprintf(ctx->message, sizeof ctx->message, "%s: unexpected exception", fn);
   }
-  ctx->last_status = o.status;
-  std::memcpy(ctx->message, o.text, sizeof ctx->message);
-  ctx->message[sizeof ctx->message - 1] = '\0';
-  if (o.status != CYC_OK && ctx->handler)
-    ctx->handler(o.status, ctx->message, ctx->handler_userdata);
-  return o.status;
+  if (ctx->handler) ctx->handler(ctx->last_status, ctx->message, ctx->handler_userdata);
+  return ctx->last_status;
 }
 
 #define REQUIRE(ptr)                                                    \

@@ -23,6 +23,14 @@ enum class CurveKind : int {
 // form on [u0, u0 + h] (Bezier and Hermite curves). Bernstein curves are
 // evaluated by de Casteljau: converting a degree-15 Hermite curve to power
 // form loses up to 4e-5 in its 7th derivative, de Casteljau keeps ~1e-13.
+template <int N, class S>
+Vec3<Taylor<S, N>> scale_by(const Vec3<Taylor<S, N>>& P, const S& f) {
+  Vec3<Taylor<S, N>> R = P;
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k <= N; ++k) R[j].c[k] *= f;
+  return R;
+}
+
 struct RationalCurve {
   CurveKind kind = CurveKind::rational;
   CurvePoly x, y, z, w;  // homogeneous (x, y, z, w): power or Bernstein coefficients
@@ -32,11 +40,13 @@ struct RationalCurve {
 
   int degree() const;
   // True if the weight is constant (power form: degree 0; Bernstein form:
-  // all weights equal).
-  bool is_polynomial() const {
+  // all weights equal). Set by the constructors; skips the series division.
+  bool constant_weight = false;
+  bool is_polynomial() const { return constant_weight; }
+  void update_constant_weight() {
+    constant_weight = true;
     for (int k = 1; k <= w.deg; ++k)
-      if (w.c[k] != (bernstein ? w.c[0] : 0.0)) return false;
-    return true;
+      if (w.c[k] != (bernstein ? w.c[0] : 0.0)) constant_weight = false;
   }
 
   // p(u + h) as a Taylor series to order N: the point and its derivatives
@@ -44,16 +54,21 @@ struct RationalCurve {
   // element's point has derivative zero; its tangent is separate).
   template <int N, class S>
   Vec3<Taylor<S, N>> taylor(const S& u) const {
+    Vec3<Taylor<S, N>> P;
+    Taylor<S, N> W;
     if (bernstein) {
       const S t = (u - S(u0)) / S(h);
       const int n = degree();
-      const Taylor<S, N> W = bernstein_taylor<N>(w.c, n, t, h);
-      return Vec3<Taylor<S, N>>(bernstein_taylor<N>(x.c, n, t, h) / W,
-                                bernstein_taylor<N>(y.c, n, t, h) / W,
-                                bernstein_taylor<N>(z.c, n, t, h) / W);
+      P = {bernstein_taylor<N>(x.c, n, t, h), bernstein_taylor<N>(y.c, n, t, h),
+           bernstein_taylor<N>(z.c, n, t, h)};
+      if (constant_weight) return scale_by(P, S(1.0 / w.c[0]));
+      W = bernstein_taylor<N>(w.c, n, t, h);
+    } else {
+      P = {x.taylor<N>(u), y.taylor<N>(u), z.taylor<N>(u)};
+      if (constant_weight) return scale_by(P, S(1.0 / w.c[0]));
+      W = w.taylor<N>(u);
     }
-    const Taylor<S, N> W = w.taylor<N>(u);
-    return Vec3<Taylor<S, N>>(x.taylor<N>(u) / W, y.taylor<N>(u) / W, z.taylor<N>(u) / W);
+    return Vec3<Taylor<S, N>>(P[0] / W, P[1] / W, P[2] / W);
   }
   Vec3d point(double u) const {
     const auto P = taylor<0>(u);

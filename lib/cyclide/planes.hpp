@@ -23,9 +23,9 @@ double relative_determinant(const ThreePlanes<S>& P) {
   Vec3d n[3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) n[i][j] = value_of(P.n[i][j]);
-  const double den = n[0].norm() * n[1].norm() * n[2].norm();
-  if (!(den > 0)) return 0.0;
-  return std::abs(n[0].dot(n[1].cross(n[2]))) / den;
+  const double den2 = n[0].squaredNorm() * n[1].squaredNorm() * n[2].squaredNorm();
+  if (!(den2 > 0)) return 0.0;
+  return std::abs(n[0].dot(n[1].cross(n[2]))) / std::sqrt(den2);
 }
 
 // False if a plane is not finite (a pole of a rational input at this u).

@@ -30,11 +30,11 @@ Vec3<Taylor<S, N>> normal_plane_normal(const RationalCurve& c,
 //   B: 2 (p1 - p2) . X = |p1|^2 - |p2|^2.
 // Generic in the scalar S of u (double, or a Ceres Jet for derivatives
 // with respect to design parameters).
+// P1, P2 are p1, p2 as series of order K+1 (evaluated once by the caller).
 template <int K, class S>
 ThreePlanes<Taylor<S, K>> prcs_planes(const RationalCurve& p1, const RationalCurve& p2,
-                                       const S& u) {
-  const auto P1 = p1.taylor<K + 1>(u);
-  const auto P2 = p2.taylor<K + 1>(u);
+                                       const Vec3<Taylor<S, K + 1>>& P1,
+                                       const Vec3<Taylor<S, K + 1>>& P2) {
   const Vec3<Taylor<S, K>> q1 = truncate<K>(P1), q2 = truncate<K>(P2);
   ThreePlanes<Taylor<S, K>> T;
   T.n[0] = normal_plane_normal<K>(p1, P1);
@@ -46,14 +46,21 @@ ThreePlanes<Taylor<S, K>> prcs_planes(const RationalCurve& p1, const RationalCur
   return T;
 }
 
+template <int K, class S>
+ThreePlanes<Taylor<S, K>> prcs_planes(const RationalCurve& p1, const RationalCurve& p2,
+                                       const S& u) {
+  return prcs_planes<K>(p1, p2, p1.taylor<K + 1>(u), p2.taylor<K + 1>(u));
+}
+
 // Classify the planes at u: zero tangents (relative to tangent_scale), then
 // dependent planes (Remark 1: e.g. two lines of curvature).
 template <class S>
 Status check_prcs_planes(const ThreePlanes<S>& T, double tangent_scale) {
   if (!planes_finite(T)) return Status::numerical_overflow;  // a pole
+  const double min2 = kZeroTangentTol * kZeroTangentTol * tangent_scale * tangent_scale;
   for (int i = 0; i < 2; ++i) {
     Vec3d n(value_of(T.n[i][0]), value_of(T.n[i][1]), value_of(T.n[i][2]));
-    if (!(n.norm() > kZeroTangentTol * tangent_scale)) return Status::zero_tangent;
+    if (!(n.squaredNorm() > min2)) return Status::zero_tangent;
   }
   if (!(relative_determinant(T) > kDependentPlanesTol)) return Status::dependent_planes;
   return Status::ok;
@@ -63,22 +70,24 @@ Status check_prcs_planes(const ThreePlanes<S>& T, double tangent_scale) {
 template <int K, class S>
 Status prcs_spine(const RationalCurve& p1, const RationalCurve& p2, const S& u,
                   double tangent_scale, Vec3<Taylor<S, K>>& s) {
-  const auto T = prcs_planes<K>(p1, p2, u);
+  const auto T = prcs_planes<K>(p1, p2, p1.taylor<K + 1>(u), p2.taylor<K + 1>(u));
   if (Status st = check_prcs_planes(T, tangent_scale); st != Status::ok) return st;
   s = intersect(T);
   return Status::ok;
 }
 
-// The circle frame of PRCS at u to order N: o = s, a = s', p = p1.
+// The circle frame of PRCS at u to order N: o = s, a = s', p = p1. The
+// spine is needed to order N+1 (a = s'), hence p1, p2 to order N+2.
 template <int N, class S>
 Status prcs_frame(const RationalCurve& p1, const RationalCurve& p2, const S& u,
                   double tangent_scale, CircleFrame<Taylor<S, N>>& F) {
-  Vec3<Taylor<S, N + 1>> s;
-  if (Status st = prcs_spine<N + 1>(p1, p2, u, tangent_scale, s); st != Status::ok)
-    return st;
+  const auto P1 = p1.taylor<N + 2>(u);
+  const auto T = prcs_planes<N + 1>(p1, p2, P1, p2.taylor<N + 2>(u));
+  if (Status st = check_prcs_planes(T, tangent_scale); st != Status::ok) return st;
+  const Vec3<Taylor<S, N + 1>> s = intersect(T);
   F.o = truncate<N>(s);
   F.a = derivative(s);
-  F.p = p1.taylor<N>(u);
+  F.p = truncate<N>(P1);
   return Status::ok;
 }
 

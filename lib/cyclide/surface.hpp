@@ -51,6 +51,7 @@ class Surface {
   RationalCurve curve[3];
   int curve_count = 0;
   Mobius f;
+  bool f_constant = true;      // alpha..delta constant in u (normalized, max 1)
   double u0 = 0, u1 = 1;       // domain checked at creation
   double tangent_scale = 1.0;  // PRCS: max |p_i'| over the domain samples
 
@@ -63,6 +64,13 @@ class Surface {
                           ? prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F)
                           : prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
     if (st != Status::ok) return st;
+    if (f_constant) {  // f(u, v) = f(v): normalized once at creation
+      F.alpha = Taylor<double, N>(f.alpha.c[0]);
+      F.beta = Taylor<double, N>(f.beta.c[0]);
+      F.gamma = Taylor<double, N>(f.gamma.c[0]);
+      F.delta = Taylor<double, N>(f.delta.c[0]);
+      return check_frame(F);
+    }
     F.alpha = f.alpha.taylor<N>(u);
     F.beta = f.beta.taylor<N>(u);
     F.gamma = f.gamma.taylor<N>(u);
@@ -157,10 +165,11 @@ Status Surface::check_frame(const CircleFrame<Taylor<double, N>>& F) {
   const Vec3d d(F.p[0].c[0] - F.o[0].c[0], F.p[1].c[0] - F.o[1].c[0],
                 F.p[2].c[0] - F.o[2].c[0]);
   // a = 0 means the axis is undefined (PRCS: s' = 0, a singular spine point).
-  if (!(a.norm() > 0)) return Status::dependent_planes;
-  if (!(a.norm() >= kMinAxisLength)) return Status::numerical_overflow;
+  if (!(a.squaredNorm() > 0)) return Status::dependent_planes;
+  if (!(a.squaredNorm() >= kMinAxisLength * kMinAxisLength))
+    return Status::numerical_overflow;
   // Zero radius: the circle is a point (a singular curve of the surface).
-  if (!(d.norm() > 0)) return Status::singular_point;
+  if (!(d.squaredNorm() > 0)) return Status::singular_point;
   return Status::ok;
 }
 

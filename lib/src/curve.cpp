@@ -47,6 +47,7 @@ Status make_rational_curve(int degree, const double* xyzw, RationalCurve& out) {
   c.z.trim();
   c.w.trim();
   if (c.w.is_zero()) return Status::invalid_argument;
+  c.update_constant_weight();
   out = c;
   return Status::ok;
 }
@@ -90,6 +91,7 @@ Status make_bezier_curve(int degree, const double* ctrl, const double* weights,
   c.bernstein = true;
   c.u0 = u0;
   c.h = u1 - u0;
+  c.update_constant_weight();
   out = c;
   return Status::ok;
 }

@@ -284,6 +284,12 @@ Status scan_domain(const Surface& S, double* bad_u) {
 
 }  // namespace
 
+// f constant in u: normalize its coefficients to max |.| = 1 once (make_mobius
+// already did) so that frames can copy them.
+bool mobius_is_constant(const Mobius& m) {
+  return m.alpha.deg == 0 && m.beta.deg == 0 && m.gamma.deg == 0 && m.delta.deg == 0;
+}
+
 Status make_mobius(int degree, const double* alpha, const double* beta,
                    const double* gamma, const double* delta, Mobius& out) {
   if (!alpha || !beta || !gamma || !delta) return Status::null_argument;
@@ -323,6 +329,7 @@ Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius*
   S.curve[1] = p2;
   S.curve_count = 2;
   if (f) S.f = *f;
+  S.f_constant = mobius_is_constant(S.f);
   S.u0 = u0;
   S.u1 = u1;
   // Tangent scale: the largest |p_i'| over the domain samples.
@@ -366,6 +373,7 @@ Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
   S.curve[2] = p3;
   S.curve_count = 3;
   if (f) S.f = *f;
+  S.f_constant = mobius_is_constant(S.f);
   S.u0 = u0;
   S.u1 = u1;
   if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
