@@ -357,3 +357,31 @@ TEST(Regression, CanalTestWhereNDotCPrimeVanishes) {
   ASSERT_EQ(S.canal_test(res), Status::ok);
   EXPECT_LE(res, 1e-12);
 }
+
+// ---------------------------------------------------------------- compiled
+
+// The compiled (exact, Horner) frames are used for these examples and agree
+// with the numerical reference frames (SPEC §1a).
+TEST(CompiledFrames, AgreeWithNumericalFramesOnThePaperExamples) {
+  const RationalCurve l1 = line({0, 0, 0}, {1, 0, 0});
+  Surface S[3];
+  ASSERT_EQ(make_prcs(l1, line({0, 0, 1}, {2, 1, 0}), nullptr, -0.5, 0.5, S[0]), Status::ok);
+  ASSERT_EQ(make_prrs(l1, point({0, 0, 1}), point({1, 2, 1}), nullptr, -2, 2, S[1]),
+            Status::ok);
+  ASSERT_EQ(make_prrs(l1, line({0, 0, 0}, {2, 1, 0}), line({1, 1, 1}, {-1, 2, 0}), nullptr,
+                      0.1, 1, S[2]),
+            Status::ok);
+  for (const Surface& s : S) {
+    EXPECT_TRUE(s.compiled.valid);
+    Surface ref = s;
+    ref.compiled.valid = false;
+    for (double t : {0.0, 0.13, 0.5, 0.77, 1.0})
+      for (double v : kVs) {
+        const double u = s.u0 + t * (s.u1 - s.u0);
+        double a[12], b[12];
+        ASSERT_EQ(s.eval(u, v, {a, a + 3, a + 6, nullptr}), Status::ok);
+        ASSERT_EQ(ref.eval(u, v, {b, b + 3, b + 6, nullptr}), Status::ok);
+        for (int k = 0; k < 9; ++k) EXPECT_NEAR(a[k], b[k], 1e-12 * (1 + std::abs(b[k])));
+      }
+  }
+}

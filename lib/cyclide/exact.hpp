@@ -39,9 +39,15 @@ struct ExactFrame {
   ExactPoly r2_num, r2_den;
 };
 
-Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactFrame& out);
+// The frames in the variable t with u = mid + half t (default: t = u).
+// Evaluating in a domain-local t (the domain becomes [-1, 1]) keeps the
+// power form well conditioned for the compiled frames (compiled_frame.hpp).
+// `a` is always d/du (PRCS: s'(u) = (ds/dt) / half).
+Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactFrame& out,
+                        double mid = 0.0, double half = 1.0);
 Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
-                        const RationalCurve& p3, ExactFrame& out);
+                        const RationalCurve& p3, ExactFrame& out, double mid = 0.0,
+                        double half = 1.0);
 
 // The cross-multiplied identity a.num * b.den == b.num * a.den, coefficient
 // by coefficient, relative to the largest coefficient (tests use it to

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "cyclide/circle_family.hpp"
+#include "cyclide/compiled_frame.hpp"
 #include "cyclide/config.hpp"
 #include "cyclide/curve.hpp"
 #include "cyclide/evaluator.hpp"
@@ -54,16 +55,17 @@ class Surface {
   bool f_constant = true;      // alpha..delta constant in u (normalized, max 1)
   double u0 = 0, u1 = 1;       // domain checked at creation
   double tangent_scale = 1.0;  // PRCS: max |p_i'| over the domain samples
+  CompiledFrame compiled;      // fast exact frames, verified at creation
 
   bool is_canal_by_construction() const { return kind == SurfaceKind::prcs; }
 
   // The frame at u as series of order N (N = 0: values, N = 1: with d/du).
   template <int N>
   Status frame(double u, CircleFrame<Taylor<double, N>>& F) const {
-    const Status st = kind == SurfaceKind::prcs
-                          ? prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F)
-                          : prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
-    if (st != Status::ok) return st;
+    if (!compiled.eval<N>(u, F.o, F.a, F.p)) {
+      const Status st = numeric_frame<N>(u, F);
+      if (st != Status::ok) return st;
+    }
     if (f_constant) {  // f(u, v) = f(v): normalized once at creation
       F.alpha = Taylor<double, N>(f.alpha.c[0]);
       F.beta = Taylor<double, N>(f.beta.c[0]);
@@ -86,6 +88,15 @@ class Surface {
     F.gamma *= inv;
     F.delta *= inv;
     return check_frame(F);
+  }
+
+  // The frame by intersecting planes on series (the reference; it detects
+  // every degenerate configuration).
+  template <int N>
+  Status numeric_frame(double u, CircleFrame<Taylor<double, N>>& F) const {
+    return kind == SurfaceKind::prcs
+               ? prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F)
+               : prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
   }
 
   // Circle data at u: center, plane normal (unit), radius^2.

@@ -12,13 +12,22 @@ namespace {
 struct Algebra {
   bool overflow = false;
 
-  // A curve polynomial as a polynomial in u (Bernstein curves converted).
+  // u = mid + half t.
+  double mid = 0.0, half = 1.0;
+
+  // A curve polynomial as a polynomial in t (Bernstein curves converted).
   ExactPoly lift(const RationalCurve& c, const CurvePoly& p) {
     ExactPoly r;
-    if (c.bernstein)
-      from_bernstein(p.c, p.deg, c.u0, c.u0 + c.h, r);
-    else
-      r.assign(p);
+    if (c.bernstein) {
+      from_bernstein(p.c, p.deg, (c.u0 - mid) / half, (c.u0 + c.h - mid) / half, r);
+      return r;
+    }
+    // p(mid + half t): Taylor shift by mid, then scale coefficient k by half^k.
+    r.assign(p);
+    for (int i = 0; i < r.deg; ++i)
+      for (int j = r.deg - 1; j >= i; --j) r.c[j] = r.c[j] + mid * r.c[j + 1];
+    double f = 1.0;
+    for (int k = 0; k <= r.deg; ++k, f *= half) r.c[k] *= f;
     return r;
   }
   ExactPoly mul(const ExactPoly& a, const ExactPoly& b) {
@@ -100,8 +109,11 @@ void normal_plane_row(Algebra& A, const RationalCurve& c, const Hom& h, Algebra:
 
 }  // namespace
 
-Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactFrame& out) {
+Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactFrame& out,
+                        double mid, double half) {
   Algebra A;
+  A.mid = mid;
+  A.half = half;
   const Hom h1 = homogeneous(A, p1), h2 = homogeneous(A, p2);
   Algebra::V n[3];
   ExactPoly b[3];
@@ -117,9 +129,9 @@ Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactF
   Algebra::V N;
   ExactPoly D;
   A.cramer(n, b, N, D);
-  // s' = (N' D - N D') / D^2.
+  // s'(u) = (N' D - N D') / (half D^2)  (' = d/dt).
   const Algebra::V Ns = A.sub(A.scale(D, A.derivative(N)), A.scale(D.derivative(), N));
-  const ExactPoly D2 = A.mul(D, D);
+  const ExactPoly D2 = A.mul(D, D).scaled(half);
   ExactFrame F;
   F.o = to_exact(N, D);
   F.a = to_exact(Ns, D2);
@@ -132,8 +144,10 @@ Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactF
 }
 
 Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
-                        const RationalCurve& p3, ExactFrame& out) {
+                        const RationalCurve& p3, ExactFrame& out, double mid, double half) {
   Algebra A;
+  A.mid = mid;
+  A.half = half;
   const Hom h1 = homogeneous(A, p1), h2 = homogeneous(A, p2), h3 = homogeneous(A, p3);
   // e_j = p1 - p_j = (P1 w_j - P_j w1) / (w1 w_j); n = e2 x e3 up to the
   // factor w1^2 w2 w3, which does not change the planes.
@@ -159,7 +173,8 @@ Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
   A.cramer(n, b, N, D);
   ExactFrame F;
   F.o = to_exact(N, D);
-  F.a = to_exact(nn, ExactPoly(1.0));
+  // n(u) = (p1 - p2) x (p1 - p3) = nn / (w1^2 w2 w3).
+  F.a = to_exact(nn, A.mul(A.mul(h1.w, h1.w), A.mul(h2.w, h3.w)));
   F.p = to_exact(h1.P, h1.w);
   squared_distance(A, h1, N, D, F.r2_num, F.r2_den);
   if (A.overflow) return Status::degree_too_high;

@@ -1,5 +1,7 @@
 #include "cyclide/surface.hpp"
 
+#include "cyclide/exact.hpp"
+
 #include <cfloat>
 #include <cmath>
 
@@ -282,6 +284,73 @@ Status scan_domain(const Surface& S, double* bad_u) {
   return Status::ok;
 }
 
+// Copy an exact polynomial into a compiled one; false if it does not fit.
+bool fit(const ExactPoly& e, CompiledPoly& c) {
+  ExactPoly t = e;
+  t.trim_relative(1e-15);
+  return c.assign(t);
+}
+
+// Build the compiled frame and verify it against the numerical frame at the
+// domain samples (values to kCompiledTol, u-derivatives to 100 kCompiledTol,
+// relative to each quantity's size); leave it invalid otherwise.
+void compile_frames(Surface& S) {
+  CompiledFrame C;
+  C.mid = 0.5 * (S.u0 + S.u1);
+  const double half = 0.5 * (S.u1 - S.u0);
+  C.inv_half = 1.0 / half;
+  C.u0 = S.u0;
+  C.u1 = S.u1;
+  ExactFrame E;
+  const Status st =
+      S.kind == SurfaceKind::prcs
+          ? exact_prcs_frame(S.curve[0], S.curve[1], E, C.mid, half)
+          : exact_prrs_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
+  if (st != Status::ok) return;
+  const ExactVec3* src[3] = {&E.o, &E.a, &E.p};
+  CompiledPoly* dst[3] = {C.o, C.a, C.p};
+  for (int i = 0; i < 3; ++i)
+    if (!fit(src[i]->x, dst[i][0]) || !fit(src[i]->y, dst[i][1]) ||
+        !fit(src[i]->z, dst[i][2]) || !fit(src[i]->w, dst[i][3]))
+      return;
+  C.axis_is_spine_derivative = S.kind == SurfaceKind::prcs;
+  C.valid = true;
+  // Sample: D(t) range for the trust floor, and agreement with the reference.
+  double dmax = 0;
+  for (int k = 0; k < kDomainSamples; ++k) {
+    const double t = -1.0 + 2.0 * double(k) / double(kDomainSamples - 1);
+    dmax = std::max(dmax, std::abs(C.o[3](t)));
+  }
+  C.det_floor = 1e-8 * dmax;
+  if (!(dmax > 0)) return;
+  for (int k = 0; k < kDomainSamples; ++k) {
+    const double u = S.u0 + (S.u1 - S.u0) * double(k) / double(kDomainSamples - 1);
+    CircleFrame<Taylor<double, 1>> R;
+    Vec3<Taylor<double, 1>> O, A, P;
+    if (S.numeric_frame<1>(u, R) != Status::ok || !C.eval<1>(u, O, A, P)) return;
+    const Vec3<Taylor<double, 1>>* mine[3] = {&O, &A, &P};
+    const Vec3<Taylor<double, 1>>* ref[3] = {&R.o, &R.a, &R.p};
+    for (int i = 0; i < 3; ++i)
+      for (int order = 0; order <= 1; ++order) {
+        Vec3d m, r;
+        for (int j = 0; j < 3; ++j) {
+          m[j] = (*mine[i])[j].c[order];
+          r[j] = (*ref[i])[j].c[order];
+        }
+        // Relative to the quantity's own size (for o, p: to the frame's
+        // size |o| + |p - o|, since positions are translation-dependent).
+        double size = r.norm();
+        if (i != 1 && order == 0)
+          size += Vec3d(R.p[0].c[0] - R.o[0].c[0], R.p[1].c[0] - R.o[1].c[0],
+                        R.p[2].c[0] - R.o[2].c[0])
+                      .norm();
+        const double tol = (order == 0 ? 1.0 : 100.0) * kCompiledTol;
+        if (!((m - r).norm() <= tol * size)) return;
+      }
+  }
+  S.compiled = C;
+}
+
 }  // namespace
 
 // f constant in u: normalize its coefficients to max |.| = 1 once (make_mobius
@@ -350,6 +419,7 @@ Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius*
   if (!(scale > 0)) return Status::zero_tangent;
   S.tangent_scale = scale;
   if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  compile_frames(S);
   out = S;
   return Status::ok;
 }
@@ -377,6 +447,7 @@ Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
   S.u0 = u0;
   S.u1 = u1;
   if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  compile_frames(S);
   out = S;
   return Status::ok;
 }
