@@ -71,31 +71,34 @@ void eval_chunk(const CircleRow& row, const double* v, int count, Chunk& out) {
   for (int i = 0; i < count; ++i) {
     const double vi = v[i];
     // |v| <= 1: Horner in v; else in t = 1/v with the coefficients reversed.
-    const bool inner = std::abs(vi) <= 1.0;
-    const double t = inner ? vi : 1.0 / vi;
-    const double den = (inner ? Q0 : Q2) + t * (Q1 + t * (inner ? Q2 : Q0));
+    // Written as exact arithmetic blends (w is 0 or 1, coefficients finite)
+    // so that the loop has no control flow and vectorizes.
+    const double w = std::abs(vi) <= 1.0 ? 1.0 : 0.0, w1 = 1.0 - w;
+    const double t = w * vi + w1 / (w1 * vi + w);  // v, or 1/v
+    const double qlo = w * Q0 + w1 * Q2, qhi = w * Q2 + w1 * Q0;
+    const double den = qlo + t * (Q1 + t * qhi);
     const double inv = 1.0 / den;
     double r[3], xu[3], xv[3];
     for (int j = 0; j < 3; ++j) {
-      const double lo = inner ? P[0][j] : P[2][j], hi = inner ? P[2][j] : P[0][j];
+      const double lo = w * P[0][j] + w1 * P[2][j], hi = w * P[2][j] + w1 * P[0][j];
       r[j] = (lo + t * (P[1][j] + t * hi)) * inv;
       out.x[j][i] = o[j] + r[j];
     }
     if (need_dv) {
       // d/dt of num/den, times dt/dv = -t^2 outside.
-      const double chain = inner ? inv : -t * t * inv;
-      const double dden = Q1 + 2.0 * t * (inner ? Q2 : Q0);
+      const double chain = (w - w1 * t * t) * inv;
+      const double dden = Q1 + 2.0 * t * qhi;
       for (int j = 0; j < 3; ++j) {
-        const double hi = inner ? P[2][j] : P[0][j];
+        const double hi = w * P[2][j] + w1 * P[0][j];
         xv[j] = (P[1][j] + 2.0 * t * hi - dden * r[j]) * chain;
         if (DV) out.xv[j][i] = xv[j];
       }
     }
     if (need_du) {
       // x_u = o_u + (num_u - den_u r) / den.
-      const double uden = (inner ? Qu0 : Qu2) + t * (Qu1 + t * (inner ? Qu2 : Qu0));
+      const double uden = w * Qu0 + w1 * Qu2 + t * (Qu1 + t * (w * Qu2 + w1 * Qu0));
       for (int j = 0; j < 3; ++j) {
-        const double lo = inner ? Pu[0][j] : Pu[2][j], hi = inner ? Pu[2][j] : Pu[0][j];
+        const double lo = w * Pu[0][j] + w1 * Pu[2][j], hi = w * Pu[2][j] + w1 * Pu[0][j];
         xu[j] = ou[j] + (lo + t * (Pu[1][j] + t * hi) - uden * r[j]) * inv;
         if (DU) out.xu[j][i] = xu[j];
       }
@@ -110,12 +113,13 @@ void eval_chunk(const CircleRow& row, const double* v, int count, Chunk& out) {
         const double len2 = c0 * c0 + c1 * c1 + c2 * c2;
         const double ref2 = (xu[0] * xu[0] + xu[1] * xu[1] + xu[2] * xu[2]) *
                             (xv[0] * xv[0] + xv[1] * xv[1] + xv[2] * xv[2]);
-        const bool singular = !(len2 > kSingularTol * kSingularTol * ref2) || !(len2 > 0);
-        const double il = singular ? 0.0 : 1.0 / std::sqrt(singular ? 1.0 : len2);
+        // Singular: |x_u x x_v| <= tol |x_u||x_v| (also when len2 = 0).
+        const double ok = len2 > kSingularTol * kSingularTol * ref2 && len2 > 0 ? 1.0 : 0.0;
+        const double il = ok / std::sqrt(len2 + (1.0 - ok));  // needs -fno-math-errno to vectorize
         out.n[0][i] = c0 * il;
         out.n[1][i] = c1 * il;
         out.n[2][i] = c2 * il;
-        out.singular[i] = singular ? 1.0 : 0.0;
+        out.singular[i] = 1.0 - ok;
       }
     }
   }
