@@ -385,3 +385,38 @@ TEST(CompiledFrames, AgreeWithNumericalFramesOnThePaperExamples) {
       }
   }
 }
+
+// Fuzzer counterexample kept as a named regression: an f with
+// alpha ~ beta ~ gamma ~ delta and a long axis made the expanded quadratic
+// P(v)/Q(v) cancel to 0/0 (eval_grid returned NaN with OK). The evaluator
+// forms W, G per point now; every output must be finite and on its sphere.
+TEST(Regression, EvaluatorFiniteWhereTheExpandedQuadraticCancelled) {
+  const double c1[9] = {-5, -0x1.3ecp+3, 1, -0x1.3feafcp+3, -0x1.3f103cp+3, -7,
+                        -8, -10, -0x1.3ecp+3};
+  const double c2[9] = {-0x1.3f38p+3, -0x1.3f2p+3, -0x1.1ecp+3, -0x1.3f38p+3, -10, -10,
+                        -10, -0x1.ffcp+2, 0};
+  RationalCurve p1, p2;
+  ASSERT_EQ(make_polynomial_curve(2, c1, p1), Status::ok);
+  ASSERT_EQ(make_polynomial_curve(2, c2, p2), Status::ok);
+  const double al[1] = {-9}, be[1] = {-8.99609375}, ga[1] = {-8.99609375},
+               de[1] = {-8.99609375};
+  Mobius m;
+  ASSERT_EQ(make_mobius(0, al, be, ga, de, m), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_prcs(p1, p2, &m, -1.75, -1.5, S), Status::ok);
+  for (double u : {-15.0, -1.6})
+    for (double v : {-1.0, -0.99, 1.0, 3.0}) {
+      double x[3], xu[3], xv[3], n[3];
+      const Status st = S.eval(u, v, {x, xu, xv, n});
+      if (st != Status::ok) continue;  // a status is fine; NaN with OK is not
+      Vec3d s;
+      double r2;
+      ASSERT_EQ(S.sphere(u, s, r2), Status::ok);
+      for (double c : {x[0], x[1], x[2], xu[0], xv[0], n[0]}) EXPECT_TRUE(std::isfinite(c));
+      EXPECT_NEAR((Vec3d(x[0], x[1], x[2]) - s).squaredNorm() / r2, 1.0, 1e-9);
+      double g[3];
+      Strided3 P{g, 3}, none{};
+      ASSERT_EQ(S.eval_grid(&u, 1, &v, 1, P, none, none, none, nullptr), Status::ok);
+      for (double c : g) EXPECT_TRUE(std::isfinite(c));
+    }
+}

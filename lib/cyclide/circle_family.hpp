@@ -14,8 +14,10 @@
 // With q = (alpha v + beta) + (gamma v + delta) a (the same quaternion up to
 // the scalar factor gamma v + delta), x - o is a quadratic rational function
 // of v: x = o + (P0 + P1 v + P2 v^2) / (Q0 + Q1 v + Q2 v^2), the rational
-// quadratic Bezier form of the circle. Everything here is generic in the
-// scalar S (double, Taylor series in u, Jets).
+// quadratic Bezier form of the circle (circle_quadratic: for export; the
+// evaluator forms W and G per point instead, which is better conditioned).
+// Everything here is generic in the scalar S (double, Taylor series in u,
+// Jets).
 #pragma once
 
 #include <cmath>
@@ -63,29 +65,28 @@ CircleQuadratic<S> circle_quadratic(const CircleFrame<S>& F) {
   return C;
 }
 
-// Point x(v) and dx/dv of the circle. For |v| > 1 the quadratic is evaluated
-// in t = 1/v (homogeneous form), so every finite v is safe from overflow.
+// The rotation data (evaluator.hpp) of a frame, generic in the scalar: with
+// S = Taylor<double, 1> it gives the values and their u-derivatives.
 template <class S>
-void circle_point(const CircleQuadratic<S>& C, double v, Vec3<S>& x, Vec3<S>* x_v) {
-  Vec3<S> num, dnum;
-  S den, dden;
-  double chain = 1.0;
-  // Horner in v for |v| <= 1, else in t = 1/v with the coefficients reversed.
-  const bool inner = std::abs(v) <= 1.0;
-  const double t = inner ? v : 1.0 / v;
-  const int lo = inner ? 0 : 2, hi = 2 - lo;
-  const S st(t), s2t(2.0 * t);
-  num = C.P[lo] + st * (C.P[1] + st * C.P[hi]);
-  den = C.Q[lo] + st * (C.Q[1] + st * C.Q[hi]);
-  if (x_v) {
-    dnum = C.P[1] + s2t * C.P[hi];
-    dden = C.Q[1] + s2t * C.Q[hi];
-    if (!inner) chain = -t * t;  // dt/dv
-  }
-  const S inv = S(1) / den;
-  const Vec3<S> r = num * inv;
-  x = C.o + r;
-  if (x_v) *x_v = (dnum - dden * r) * (inv * S(chain));
+struct RotationTerms {
+  Vec3<S> o, d, a, axd;
+  S aa, ad, alpha, beta, gamma, delta;
+};
+
+template <class S>
+RotationTerms<S> rotation_terms(const CircleFrame<S>& F) {
+  RotationTerms<S> T;
+  T.o = F.o;
+  T.d = F.p - F.o;
+  T.a = F.a;
+  T.axd = F.a.cross(T.d);
+  T.aa = F.a.dot(F.a);
+  T.ad = F.a.dot(T.d);
+  T.alpha = F.alpha;
+  T.beta = F.beta;
+  T.gamma = F.gamma;
+  T.delta = F.delta;
+  return T;
 }
 
 // The circle of the frame as geometry: center, plane normal (unit), radius^2.

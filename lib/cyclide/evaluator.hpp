@@ -1,13 +1,21 @@
 // The one evaluator of circle-family surfaces: from a circle row (the
-// quadratic x = o + (P0 + P1 v + P2 v^2)/(Q0 + Q1 v + Q2 v^2) of one u and
-// the u-derivatives of its coefficients) to points, x_u, x_v and unit
-// normals for many v at once.
+// rotation data of one u and their u-derivatives) to points, x_u, x_v and
+// unit normals for many v at once.
+//
+// Per point, q = W + G a with W = alpha s1 + beta s0, G = gamma s1 + delta s0,
+// (s1, s0) = (v, 1) for |v| <= 1 and (1, 1/v) otherwise (q scaled by 1/v:
+// the same rotation), and eqs. (11)/(27) expanded:
+//   x = o + [(W^2 - G^2 |a|^2) d + 2 G^2 (a.d) a + 2 W G (a x d)] / (W^2 + G^2 |a|^2),
+// with d = p - o. Forming W and G first keeps the result accurate when f is
+// nearly degenerate or |a| is far from 1 (expanding into a quadratic in v
+// first cancelled, and once even gave 0/0). x_v is the exact rotation rate
+//   x_v = 2 (beta gamma - alpha delta) s0^2 a x (x - o) / (W^2 + G^2 |a|^2).
 //
 // Points are computed in chunks of kChunk values of v into
-// structure-of-arrays scratch on the stack (no branches in the loop: the
-// |v| > 1 case, evaluated in t = 1/v, is a select), so the compiler
-// vectorizes it; the chunk is then written to the caller's strided buffers.
-// The kernel is specialized at compile time on what is wanted.
+// structure-of-arrays scratch on the stack with no control flow (the two
+// cases of v are exact blends), so the compiler vectorizes the loop; the
+// chunk is then written to the caller's strided buffers. The kernel is
+// specialized at compile time on what is wanted.
 #pragma once
 
 #include <cmath>
@@ -18,11 +26,19 @@
 namespace cyclide {
 inline namespace v0 {
 
-// Per-u data: the circle quadratic and its u-derivative, in plain doubles.
+// The rotation data of one circle (and, in a second copy, their
+// u-derivatives): everything a point needs besides v.
+struct RotationData {
+  double o[3], d[3], a[3], axd[3];       // axis point, p - o, axis, a x d
+  double aa, ad;                         // |a|^2, a . d
+  double alpha, beta, gamma, delta;      // f = (alpha v + beta) / (gamma v + delta)
+};
+
+// Per-u data.
 struct CircleRow {
-  CircleQuadratic<double> q;    // values
-  CircleQuadratic<double> q_u;  // d/du of every coefficient (when computed)
-  double inv_radius = 0;        // canal: 1 / r(u), for the normal (x - s)/r
+  RotationData r;    // values
+  RotationData r_u;  // d/du of every field (when computed)
+  double inv_radius = 0;  // canal: 1 / r(u), for the normal (x - s)/r
 };
 
 // Caller-owned strided output of 3-vectors: element i at data + i * stride.
@@ -49,57 +65,47 @@ template <bool DU, bool DV, bool NORMAL, bool CANAL>
 void eval_chunk(const CircleRow& row, const double* v, int count, Chunk& out) {
   constexpr bool need_du = DU || (NORMAL && !CANAL);
   constexpr bool need_dv = DV || (NORMAL && !CANAL);
-  const CircleQuadratic<double>& C = row.q;
-  const CircleQuadratic<double>& D = row.q_u;
-  // Coefficients as plain scalars: the loop below then only reads registers.
-  double P[3][3], Pu[3][3], o[3], ou[3];
-  for (int k = 0; k < 3; ++k)
-    for (int j = 0; j < 3; ++j) {
-      P[k][j] = C.P[k][j];
-      Pu[k][j] = D.P[k][j];
-    }
-  for (int j = 0; j < 3; ++j) {
-    o[j] = C.o[j];
-    ou[j] = D.o[j];
-  }
-  const double Q0 = C.Q[0], Q1 = C.Q[1], Q2 = C.Q[2];
-  const double Qu0 = D.Q[0], Qu1 = D.Q[1], Qu2 = D.Q[2];
+  const RotationData R = row.r, D = row.r_u;  // local copies: no aliasing with out
+  const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
   const double inv_radius = row.inv_radius;
-#if defined(__GNUC__)
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
   for (int i = 0; i < count; ++i) {
     const double vi = v[i];
-    // |v| <= 1: Horner in v; else in t = 1/v with the coefficients reversed.
-    // Written as exact arithmetic blends (w is 0 or 1, coefficients finite)
-    // so that the loop has no control flow and vectorizes.
+    // (s1, s0) = (v, 1) or (1, 1/v), as exact blends (w is 0 or 1).
     const double w = std::abs(vi) <= 1.0 ? 1.0 : 0.0, w1 = 1.0 - w;
-    const double t = w * vi + w1 / (w1 * vi + w);  // v, or 1/v
-    const double qlo = w * Q0 + w1 * Q2, qhi = w * Q2 + w1 * Q0;
-    const double den = qlo + t * (Q1 + t * qhi);
+    const double s1 = w * vi + w1, s0 = w + w1 / (w1 * vi + w);
+    const double W = R.alpha * s1 + R.beta * s0, G = R.gamma * s1 + R.delta * s0;
+    const double W2 = W * W, G2 = G * G, WG = W * G;
+    const double den = W2 + G2 * R.aa;
     const double inv = 1.0 / den;
+    const double cd = W2 - G2 * R.aa, ca = 2.0 * G2 * R.ad, cx = 2.0 * WG;
     double r[3], xu[3], xv[3];
     for (int j = 0; j < 3; ++j) {
-      const double lo = w * P[0][j] + w1 * P[2][j], hi = w * P[2][j] + w1 * P[0][j];
-      r[j] = (lo + t * (P[1][j] + t * hi)) * inv;
-      out.x[j][i] = o[j] + r[j];
+      r[j] = (cd * R.d[j] + ca * R.a[j] + cx * R.axd[j]) * inv;
+      out.x[j][i] = R.o[j] + r[j];
     }
     if (need_dv) {
-      // d/dt of num/den, times dt/dv = -t^2 outside.
-      const double chain = (w - w1 * t * t) * inv;
-      const double dden = Q1 + 2.0 * t * qhi;
-      for (int j = 0; j < 3; ++j) {
-        const double hi = w * P[2][j] + w1 * P[0][j];
-        xv[j] = (P[1][j] + 2.0 * t * hi - dden * r[j]) * chain;
-        if (DV) out.xv[j][i] = xv[j];
-      }
+      // Exact rotation rate about a: d theta/dv = 2 (beta gamma - alpha delta) |a| / den.
+      const double rate = k * s0 * s0 * inv;
+      xv[0] = rate * (R.a[1] * r[2] - R.a[2] * r[1]);
+      xv[1] = rate * (R.a[2] * r[0] - R.a[0] * r[2]);
+      xv[2] = rate * (R.a[0] * r[1] - R.a[1] * r[0]);
+      if (DV)
+        for (int j = 0; j < 3; ++j) out.xv[j][i] = xv[j];
     }
     if (need_du) {
-      // x_u = o_u + (num_u - den_u r) / den.
-      const double uden = w * Qu0 + w1 * Qu2 + t * (Qu1 + t * (w * Qu2 + w1 * Qu0));
+      // x_u = o_u + (num_u - den_u r) / den, with W_u, G_u from f's u-derivatives.
+      const double Wu = D.alpha * s1 + D.beta * s0, Gu = D.gamma * s1 + D.delta * s0;
+      const double W2u = 2.0 * W * Wu, G2u = 2.0 * G * Gu, WGu = Wu * G + W * Gu;
+      const double den_u = W2u + G2u * R.aa + G2 * D.aa;
+      const double cd_u = W2u - G2u * R.aa - G2 * D.aa;
+      const double ca_u = 2.0 * (G2u * R.ad + G2 * D.ad), cx_u = 2.0 * WGu;
       for (int j = 0; j < 3; ++j) {
-        const double lo = w * Pu[0][j] + w1 * Pu[2][j], hi = w * Pu[2][j] + w1 * Pu[0][j];
-        xu[j] = ou[j] + (lo + t * (Pu[1][j] + t * hi) - uden * r[j]) * inv;
+        const double num_u = cd_u * R.d[j] + cd * D.d[j] + ca_u * R.a[j] + ca * D.a[j] +
+                             cx_u * R.axd[j] + cx * D.axd[j];
+        xu[j] = D.o[j] + (num_u - den_u * r[j]) * inv;
         if (DU) out.xu[j][i] = xu[j];
       }
     }

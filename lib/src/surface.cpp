@@ -25,15 +25,23 @@ CircleFrame<double> values(const CircleFrame<Taylor<double, N>>& F) {
   return V;
 }
 
-// Coefficient i (0: value, 1: d/du) of a circle quadratic of series.
-CircleQuadratic<double> coefficient(const CircleQuadratic<Taylor<double, 1>>& C, int i) {
-  CircleQuadratic<double> V;
-  for (int j = 0; j < 3; ++j) V.o[j] = C.o[j].c[i];
-  for (int k = 0; k < 3; ++k) {
-    for (int j = 0; j < 3; ++j) V.P[k][j] = C.P[k][j].c[i];
-    V.Q[k] = C.Q[k].c[i];
+// Coefficient i (0: value, 1: d/du) of rotation terms of series.
+template <int N>
+RotationData coefficient(const RotationTerms<Taylor<double, N>>& T, int i) {
+  RotationData R;
+  for (int j = 0; j < 3; ++j) {
+    R.o[j] = T.o[j].c[i];
+    R.d[j] = T.d[j].c[i];
+    R.a[j] = T.a[j].c[i];
+    R.axd[j] = T.axd[j].c[i];
   }
-  return V;
+  R.aa = T.aa.c[i];
+  R.ad = T.ad.c[i];
+  R.alpha = T.alpha.c[i];
+  R.beta = T.beta.c[i];
+  R.gamma = T.gamma.c[i];
+  R.delta = T.delta.c[i];
+  return R;
 }
 
 bool finite3(const Vec3d& v) {
@@ -88,21 +96,19 @@ RowGridFn row_grid_kernel(bool du, bool dv, bool normal, bool canal) {
 Status Surface::row(double u, bool with_du, CircleRow& r) const {
   if (!input_ok(u)) return Status::not_finite;
   CircleRow R;
-  Vec3d d;
   if (with_du) {
     CircleFrame<Taylor<double, 1>> F;
     if (Status st = frame<1>(u, F); st != Status::ok) return st;
-    const CircleQuadratic<Taylor<double, 1>> Q = circle_quadratic(F);
-    R.q = coefficient(Q, 0);
-    R.q_u = coefficient(Q, 1);
-    d = values(F).p - values(F).o;
+    const RotationTerms<Taylor<double, 1>> T = rotation_terms(F);
+    R.r = coefficient(T, 0);
+    R.r_u = coefficient(T, 1);
   } else {
     CircleFrame<Taylor<double, 0>> F;
     if (Status st = frame<0>(u, F); st != Status::ok) return st;
-    const CircleFrame<double> V = values(F);
-    R.q = circle_quadratic(V);
-    d = V.p - V.o;
+    R.r = coefficient(rotation_terms(F), 0);
+    R.r_u = RotationData{};
   }
+  const Vec3d d(R.r.d[0], R.r.d[1], R.r.d[2]);
   R.inv_radius = 1.0 / d.norm();  // d != 0 is checked by check_frame
   r = R;
   return Status::ok;
