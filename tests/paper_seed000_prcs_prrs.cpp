@@ -420,3 +420,18 @@ TEST(Regression, EvaluatorFiniteWhereTheExpandedQuadraticCancelled) {
       for (double c : g) EXPECT_TRUE(std::isfinite(c));
     }
 }
+
+// At v -> infinity (the generator p1) x_v underflows like 1/v^2, but the
+// ringed normal is defined there: it is computed from x_t, t = 1/v.
+TEST(Regression, RingedNormalDefinedAtTheGenerator) {
+  Surface S;
+  ASSERT_EQ(make_prrs(line({0, 0, 0}, {1, 0, 0}), line({0, 0, 0}, {2, 1, 0}),
+                      line({1, 1, 1}, {-1, 2, 0}), nullptr, 0.1, 1, S),
+            Status::ok);
+  for (double u : {0.2, 0.7}) {
+    double far[3], near[3];
+    ASSERT_EQ(S.eval(u, 1e300, {nullptr, nullptr, nullptr, far}), Status::ok);
+    ASSERT_EQ(S.eval(u, 1e7, {nullptr, nullptr, nullptr, near}), Status::ok);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(far[k], near[k], 1e-6);
+  }
+}

@@ -9,7 +9,8 @@
 // with d = p - o. Forming W and G first keeps the result accurate when f is
 // nearly degenerate or |a| is far from 1 (expanding into a quadratic in v
 // first cancelled, and once even gave 0/0). x_v is the exact rotation rate
-//   x_v = 2 (beta gamma - alpha delta) s0^2 a x (x - o) / (W^2 + G^2 |a|^2).
+//   x_v = 2 (beta gamma - alpha delta) s0^2 a x (x - o) / (W^2 + G^2 |a|^2);
+// ringed normals use it without the s0^2 (parallel, finite as v -> inf).
 //
 // Points are computed in chunks of kChunk values of v into
 // structure-of-arrays scratch on the stack with no control flow (the two
@@ -87,13 +88,16 @@ void eval_chunk(const CircleRow& row, const double* v, int count, Chunk& out) {
       out.x[j][i] = R.o[j] + r[j];
     }
     if (need_dv) {
-      // Exact rotation rate about a: d theta/dv = 2 (beta gamma - alpha delta) |a| / den.
-      const double rate = k * s0 * s0 * inv;
+      // Exact rotation rate about a: d theta/dv = 2 (beta gamma - alpha delta) |a| / den
+      // (den of the scaled q; x_v = s0^2 times it). xv holds the direction
+      // before the s0^2 factor: for |v| > 1 it is -dx/dt (t = 1/v), which
+      // stays finite as v -> infinity, so normals are defined there too.
+      const double rate = k * inv;
       xv[0] = rate * (R.a[1] * r[2] - R.a[2] * r[1]);
       xv[1] = rate * (R.a[2] * r[0] - R.a[0] * r[2]);
       xv[2] = rate * (R.a[0] * r[1] - R.a[1] * r[0]);
       if (DV)
-        for (int j = 0; j < 3; ++j) out.xv[j][i] = xv[j];
+        for (int j = 0; j < 3; ++j) out.xv[j][i] = s0 * s0 * xv[j];
     }
     if (need_du) {
       // x_u = o_u + (num_u - den_u r) / den, with W_u, G_u from f's u-derivatives.
