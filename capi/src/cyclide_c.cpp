@@ -99,19 +99,29 @@ int cyc_context_set_error_handler(cyc_context* ctx, cyc_error_handler handler,
 
 // ------------------------------------------------------------ curves
 
+namespace {
+// Validate stride and degree of a strided coefficient table with `width`
+// doubles per row and pack it densely (degree+1 rows) into `packed`.
+Outcome pack_rows(const char* fn, int degree, const double* rows, size_t stride, int width,
+                  double* packed) {
+  if (stride < size_t(width)) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < %d", fn, width);
+  if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
+    return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
+                "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
+  for (int k = 0; k <= degree; ++k)
+    for (int j = 0; j < width; ++j) packed[width * k + j] = rows[k * stride + j];
+  return ok();
+}
+}  // namespace
+
 int cyc_curve_create_polynomial(cyc_context* ctx, int degree, const double* coeffs,
                                 size_t stride, cyc_curve** out) {
   const char* fn = "cyc_curve_create_polynomial";
   return run(ctx, fn, [&] {
     REQUIRE(coeffs);
     REQUIRE(out);
-    if (stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < 3", fn);
-    if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
-      return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
-                  "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
     double packed[3 * (kMaxCurveDegree + 1)];
-    for (int k = 0; k <= degree; ++k)
-      for (int j = 0; j < 3; ++j) packed[3 * k + j] = coeffs[k * stride + j];
+    if (Outcome o = pack_rows(fn, degree, coeffs, stride, 3, packed); o.status) return o;
     RationalCurve c;
     if (Status s = make_polynomial_curve(degree, packed, c); s != Status::ok)
       return from_core(fn, s);
@@ -125,13 +135,8 @@ int cyc_curve_create_rational(cyc_context* ctx, int degree, const double* coeffs
   return run(ctx, fn, [&] {
     REQUIRE(coeffs);
     REQUIRE(out);
-    if (stride < 4) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < 4", fn);
-    if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
-      return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
-                  "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
     double packed[4 * (kMaxCurveDegree + 1)];
-    for (int k = 0; k <= degree; ++k)
-      for (int j = 0; j < 4; ++j) packed[4 * k + j] = coeffs[k * stride + j];
+    if (Outcome o = pack_rows(fn, degree, coeffs, stride, 4, packed); o.status) return o;
     RationalCurve c;
     if (Status s = make_rational_curve(degree, packed, c); s != Status::ok)
       return s == Status::invalid_argument
@@ -148,13 +153,8 @@ int cyc_curve_create_bezier(cyc_context* ctx, int degree, const double* ctrl,
   return run(ctx, fn, [&] {
     REQUIRE(ctrl);
     REQUIRE(out);
-    if (stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < 3", fn);
-    if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
-      return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
-                  "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
     double packed[3 * (kMaxCurveDegree + 1)];
-    for (int k = 0; k <= degree; ++k)
-      for (int j = 0; j < 3; ++j) packed[3 * k + j] = ctrl[k * stride + j];
+    if (Outcome o = pack_rows(fn, degree, ctrl, stride, 3, packed); o.status) return o;
     RationalCurve c;
     if (Status s = make_bezier_curve(degree, packed, weights, u0, u1, c); s != Status::ok)
       return s == Status::invalid_argument
