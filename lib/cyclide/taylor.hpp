@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <type_traits>
 
 namespace cyclide {
 inline namespace v0 {
@@ -26,6 +27,11 @@ struct Taylor {
     c[0] = value;
     for (int k = 1; k <= N; ++k) c[k] = T(0);
   }
+  // Plain numbers (Eigen writes Scalar(0); Jets have explicit constructors).
+  template <class A, typename std::enable_if<std::is_arithmetic<A>::value &&
+                                                 !std::is_same<A, T>::value,
+                                             int>::type = 0>
+  Taylor(A value) : Taylor(T(value)) {}  // NOLINT
   // The variable itself around u0: u0 + h.
   static Taylor variable(const T& u0) {
     Taylor t(u0);
@@ -127,11 +133,16 @@ bool isfinite(const Taylor<T, N>& a) {
   return true;
 }
 
-// Value of a scalar or of a series (lets templated code read plain numbers).
+// Value of a scalar, of a series, or of a Ceres Jet (member `a`): lets
+// templated code read plain numbers for its degeneracy tests.
 inline double value_of(double x) { return x; }
+template <class J>
+auto value_of(const J& x) -> decltype(double(x.a)) {
+  return double(x.a);
+}
 template <class T, int N>
-T value_of(const Taylor<T, N>& x) {
-  return x.c[0];
+double value_of(const Taylor<T, N>& x) {
+  return value_of(x.c[0]);
 }
 
 }  // namespace v0

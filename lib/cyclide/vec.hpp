@@ -14,12 +14,12 @@ using Vec3 = Eigen::Matrix<S, 3, 1>;
 using Vec3d = Eigen::Vector3d;
 
 // Truncation and derivative of vector-valued series (see taylor.hpp).
-template <int M, int N>
-Vec3<Taylor<double, M>> truncate(const Vec3<Taylor<double, N>>& v) {
+template <int M, int N, class S>
+Vec3<Taylor<S, M>> truncate(const Vec3<Taylor<S, N>>& v) {
   return {truncate<M>(v[0]), truncate<M>(v[1]), truncate<M>(v[2])};
 }
-template <int N>
-Vec3<Taylor<double, N - 1>> derivative(const Vec3<Taylor<double, N>>& v) {
+template <int N, class S>
+Vec3<Taylor<S, N - 1>> derivative(const Vec3<Taylor<S, N>>& v) {
   return {derivative(v[0]), derivative(v[1]), derivative(v[2])};
 }
 
