@@ -121,3 +121,23 @@ TEST(Hermite, InterpolatesDerivativesAtBothEnds) {
   Vec3d z[9];
   EXPECT_EQ(make_hermite_curve(8, 0, 1, z, z, c), Status::degree_too_high);
 }
+
+TEST(CircleQuadratic, IsTheRationalQuadraticOfTheRotation) {
+  // x - o = (P0 + P1 v + P2 v^2) / (Q0 + Q1 v + Q2 v^2) equals the rotation
+  // (11) of p - o by q = (alpha v + beta) + (gamma v + delta) a.
+  CircleFrame<double> F;
+  F.o = Vec3d(0.5, -1, 2);
+  F.a = Vec3d(0.3, 0.8, -0.4);
+  F.p = Vec3d(1.5, 0.25, 1);
+  F.alpha = 1.2;
+  F.beta = -0.3;
+  F.gamma = 0.4;
+  F.delta = 0.9;
+  const CircleQuadratic<double> C = circle_quadratic(F);
+  for (double v : {-3.0, -0.5, 0.0, 0.7, 2.0}) {
+    const Vec3d num = C.P[0] + v * C.P[1] + v * v * C.P[2];
+    const double den = C.Q[0] + v * C.Q[1] + v * v * C.Q[2];
+    const Quat<double> q{F.alpha * v + F.beta, (F.gamma * v + F.delta) * F.a};
+    EXPECT_LE((num / den - rotate(q, Vec3d(F.p - F.o))).norm(), 1e-14);
+  }
+}

@@ -22,7 +22,7 @@ inline namespace v0 {
 
 // Largest magnitude a frame value may have; beyond it evaluation reports
 // numerical_overflow instead of risking Inf in the products of up to five
-// frame values that the circle quadratic forms.
+// frame values that the rotation formula of evaluator.hpp forms.
 constexpr double kMaxFrameMagnitude = 1e30;
 constexpr double kMinAxisLength = 1e-30;
 
@@ -78,7 +78,7 @@ class Surface {
     F.gamma = f.gamma.taylor<N>(u);
     F.delta = f.delta.taylor<N>(u);
     // x is invariant under q -> lambda q: scale f's coefficients so that the
-    // largest value is 1 (keeps the circle quadratic away from underflow).
+    // largest value is 1 (keeps W^2 + G^2 |a|^2 away from underflow).
     const double m = std::max(std::max(std::abs(F.alpha.c[0]), std::abs(F.beta.c[0])),
                               std::max(std::abs(F.gamma.c[0]), std::abs(F.delta.c[0])));
     if (!(m > 0) || !(m <= kMaxFrameMagnitude)) return Status::degenerate_circle_parameter;
