@@ -59,6 +59,12 @@ class Surface {
 
   bool is_canal_by_construction() const { return kind == SurfaceKind::prcs; }
 
+  // The k-th of the kDomainSamples equally spaced parameters of the domain
+  // (creation scan, compiled-frame check, canal test, closest-point start).
+  double sample(int k) const {
+    return u0 + (u1 - u0) * double(k) / double(kDomainSamples - 1);
+  }
+
   // The frame at u as series of order N (N = 0: values, N = 1: with d/du).
   template <int N>
   Status frame(double u, CircleFrame<Taylor<double, N>>& F) const {
@@ -106,10 +112,6 @@ class Surface {
 
   // Row data for u, with or without u-derivatives.
   Status row(double u, bool with_du, CircleRow& r) const;
-  // Evaluate one point of a row at v; returns singular_point when a ringed
-  // normal is wanted and x_u x x_v vanishes (nothing written then).
-  Status eval_row(const CircleRow& r, double v, const EvalOut& out) const;
-
   // x(u,v) and optionally x_u, x_v, unit normal. On error nothing is written.
   // u must satisfy input_ok; v may be any finite double (|v| > 1 is
   // evaluated in 1/v, so v = 1e300 is the generator p(u) to rounding).

@@ -55,7 +55,7 @@ Status closest_point(const Surface& S, const Vec3d& X, ClosestPoint& out) {
   // Global start on the circles.
   double best_u = S.u0, best = HUGE_VAL;
   for (int k = 0; k < kDomainSamples; ++k) {
-    const double u = S.u0 + (S.u1 - S.u0) * double(k) / double(kDomainSamples - 1);
+    const double u = S.sample(k);
     const double d = circle_distance(S, u, X);
     if (d < best) {
       best = d;

@@ -114,11 +114,6 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
   return Status::ok;
 }
 
-Status Surface::eval_row(const CircleRow& r, double v, const EvalOut& out) const {
-  if (!std::isfinite(v)) return Status::not_finite;
-  return eval_one(*this, r, v, out, false, nullptr);
-}
-
 Status Surface::eval(double u, double v, const EvalOut& out) const {
   if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
   const bool with_du = out.du || (out.normal && !is_canal_by_construction());
@@ -169,15 +164,26 @@ Status Surface::eval_batch(const double* uv, std::size_t uv_stride, std::size_t 
   if (uv_stride < 2) return Status::invalid_argument;
   if (Status st = check_buffers({&points, &du, &dv, &normals}); st != Status::ok) return st;
   const bool with_du = du.data || (normals.data && !is_canal_by_construction());
+  // Pass 1: validate (as in eval_grid); pass 2: evaluate and write. A row is
+  // recomputed only when u changes (row-major batches reuse it).
   CircleRow r;
-  // Pass 1: validate (as in eval_grid); pass 2: evaluate and write.
+  double row_u = 0;
+  bool have_row = false;
+  auto row_for = [&](double u) -> Status {
+    if (have_row && u == row_u) return Status::ok;
+    const Status st = row(u, with_du, r);
+    have_row = st == Status::ok;
+    row_u = u;
+    return st;
+  };
   for (std::size_t k = 0; k < count; ++k) {
     if (!std::isfinite(uv[k * uv_stride + 1])) return Status::not_finite;
-    if (Status st = row(uv[k * uv_stride], with_du, r); st != Status::ok) return st;
+    if (Status st = row_for(uv[k * uv_stride]); st != Status::ok) return st;
   }
+  have_row = false;
   std::size_t count_singular = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    row(uv[k * uv_stride], with_du, r);
+    row_for(uv[k * uv_stride]);
     bool sing = false;
     const EvalOut out{points.data ? points.at(k) : nullptr, du.data ? du.at(k) : nullptr,
                       dv.data ? dv.at(k) : nullptr, normals.data ? normals.at(k) : nullptr};
@@ -253,7 +259,7 @@ Status Surface::ringed(double u, RingedData& R) const {
 Status Surface::canal_test(double& max_residual) const {
   double worst = 0;
   for (int k = 0; k < kDomainSamples; ++k) {
-    const double u = u0 + (u1 - u0) * double(k) / double(kDomainSamples - 1);
+    const double u = sample(k);
     RingedData R;
     if (Status st = ringed(u, R); st != Status::ok) return st;
     worst = std::max(worst, canal_residual(R));
@@ -266,10 +272,6 @@ Status Surface::canal_test(double& max_residual) const {
 
 namespace {
 
-double domain_sample(double u0, double u1, int k) {
-  return u0 + (u1 - u0) * double(k) / double(kDomainSamples - 1);
-}
-
 Status check_domain(double u0, double u1) {
   if (!input_ok(u0) || !input_ok(u1)) return Status::not_finite;
   if (!(u1 > u0)) return Status::bad_domain;
@@ -280,7 +282,7 @@ Status check_domain(double u0, double u1) {
 // the point and partials must be computable).
 Status scan_domain(const Surface& S, double* bad_u) {
   for (int k = 0; k < kDomainSamples; ++k) {
-    const double u = domain_sample(S.u0, S.u1, k);
+    const double u = S.sample(k);
     CircleFrame<Taylor<double, 0>> F;
     if (Status st = S.frame<0>(u, F); st != Status::ok) {
       if (bad_u) *bad_u = u;
@@ -330,7 +332,7 @@ void compile_frames(Surface& S) {
   C.det_floor = 1e-8 * dmax;
   if (!(dmax > 0)) return;
   for (int k = 0; k < kDomainSamples; ++k) {
-    const double u = S.u0 + (S.u1 - S.u0) * double(k) / double(kDomainSamples - 1);
+    const double u = S.sample(k);
     CircleFrame<Taylor<double, 1>> R;
     Vec3<Taylor<double, 1>> O, A, P;
     if (S.numeric_frame<1>(u, R) != Status::ok || !C.eval<1>(u, O, A, P)) return;
@@ -410,7 +412,7 @@ Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius*
   // Tangent scale: the largest |p_i'| over the domain samples.
   double scale = 0;
   for (int k = 0; k < kDomainSamples; ++k) {
-    const double u = domain_sample(u0, u1, k);
+    const double u = S.sample(k);
     for (int i = 0; i < 2; ++i) {
       const RationalCurve& c = S.curve[i];
       const double t = c.kind == CurveKind::line_element
