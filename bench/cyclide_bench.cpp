@@ -325,16 +325,16 @@ BENCHMARK_CAPTURE(BM_EvalBatch, prrs_point, Kind::prrs, false);
 BENCHMARK_CAPTURE(BM_EvalBatch, prrs_point_du_dv_normal, Kind::prrs, true);
 
 BENCHMARK_CAPTURE(BM_Grid, prcs_points, Kind::prcs, kPoints)
-    ->Args({1000, 1000})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Grid, prcs_points_normals, Kind::prcs, kPointsNormals)
-    ->Args({1000, 1000})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Grid, prcs_all, Kind::prcs, kAll)
-    ->Args({1000, 1000})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Grid, prrs_points, Kind::prrs, kPoints)
-    ->Args({1000, 1000})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Grid, prrs_points_normals, Kind::prrs, kPointsNormals)
-    ->Args({1000, 1000})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Grid, prrs_all, Kind::prrs, kAll)
-    ->Args({1000, 1000})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

@@ -358,16 +358,10 @@ int cyc_surface_eval(cyc_context* ctx, const cyc_surface* surface, double u, dou
     REQUIRE(surface);
     if (!point && !du && !dv && !normal)
       return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
-    // Evaluate into locals so that outputs stay untouched on error.
-    double x[3], xu[3], xv[3], n[3];
-    EvalOut o{point ? x : nullptr, du ? xu : nullptr, dv ? xv : nullptr,
-              normal ? n : nullptr};
-    if (Status s = surface->surface.eval(u, v, o); s != Status::ok)
+    // Surface::eval writes the outputs only on success.
+    if (Status s = surface->surface.eval(u, v, EvalOut{point, du, dv, normal});
+        s != Status::ok)
       return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
-    if (point) std::memcpy(point, x, sizeof x);
-    if (du) std::memcpy(du, xu, sizeof xu);
-    if (dv) std::memcpy(dv, xv, sizeof xv);
-    if (normal) std::memcpy(normal, n, sizeof n);
     return ok();
   });
 }

@@ -34,5 +34,11 @@ constexpr int kDomainSamples = 257;
 // rejected as non-finite input so that products of a few of them stay finite.
 constexpr double kMaxInputMagnitude = 1e100;
 
+// Largest magnitude a frame value may have; beyond it evaluation reports
+// numerical_overflow instead of risking Inf in the products of up to five
+// frame values that the rotation formula of evaluator.hpp forms.
+constexpr double kMaxFrameMagnitude = 1e30;
+constexpr double kMinAxisLength = 1e-30;
+
 }  // namespace v0
 }  // namespace cyclide

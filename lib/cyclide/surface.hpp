@@ -20,11 +20,6 @@
 namespace cyclide {
 inline namespace v0 {
 
-// Largest magnitude a frame value may have; beyond it evaluation reports
-// numerical_overflow instead of risking Inf in the products of up to five
-// frame values that the rotation formula of evaluator.hpp forms.
-constexpr double kMaxFrameMagnitude = 1e30;
-constexpr double kMinAxisLength = 1e-30;
 
 using MobiusPoly = Poly<double, kMaxMobiusDegree>;
 

@@ -48,54 +48,46 @@ bool finite3(const Vec3d& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
-using ChunkFn = void (*)(const CircleRow&, const double*, int, Chunk&);
-
-ChunkFn chunk_kernel(bool du, bool dv, bool normal, bool canal) {
-#define CYC_K(k) &eval_chunk<(k & 8) != 0, (k & 4) != 0, (k & 2) != 0, (k & 1) != 0>
-  static const ChunkFn table[16] = {CYC_K(0),  CYC_K(1),  CYC_K(2),  CYC_K(3),
-                                    CYC_K(4),  CYC_K(5),  CYC_K(6),  CYC_K(7),
-                                    CYC_K(8),  CYC_K(9),  CYC_K(10), CYC_K(11),
-                                    CYC_K(12), CYC_K(13), CYC_K(14), CYC_K(15)};
-#undef CYC_K
-  return table[(du ? 8 : 0) | (dv ? 4 : 0) | (normal ? 2 : 0) | (canal ? 1 : 0)];
-}
-
-// One point through the chunk kernel; singular_point for an undefined
-// normal, numerical_overflow (never expected, see SPEC §3) for non-finite
-// results. Nothing is written on error.
-Status eval_one(const Surface& S, const CircleRow& r, double v, const EvalOut& out,
-                bool zero_singular_normal, bool* singular) {
-  Chunk c;
-  chunk_kernel(out.du, out.dv, out.normal, S.is_canal_by_construction())(r, &v, 1, c);
-  const bool sing = out.normal && !S.is_canal_by_construction() && c.singular[0] != 0.0;
+// Write a point's wanted results; singular_point for an undefined normal,
+// numerical_overflow (never expected, see SPEC §3) for non-finite results.
+// Nothing is written on error.
+Status write_point(const PointResult& P, const EvalOut& out, bool canal,
+                   bool zero_singular_normal, bool* singular) {
+  const bool sing = out.normal && !canal && P.singular != 0.0;
   if (sing && !zero_singular_normal) return Status::singular_point;
   double* dst[4] = {out.point, out.du, out.dv, out.normal};
-  const double(*src[4])[kChunk] = {c.x, c.xu, c.xv, c.n};
-  for (int b = 0; b < 4; ++b)
-    if (dst[b] && !finite3(Vec3d(src[b][0][0], src[b][1][0], src[b][2][0])))
-      return Status::numerical_overflow;
+  const double* src[4] = {P.x, P.xu, P.xv, P.n};
+  bool finite = true;
   for (int b = 0; b < 4; ++b)
     if (dst[b])
-      for (int j = 0; j < 3; ++j) dst[b][j] = src[b][j][0];
+      finite &= std::isfinite(src[b][0]) && std::isfinite(src[b][1]) &&
+                std::isfinite(src[b][2]);
+  if (!finite) return Status::numerical_overflow;
+  for (int b = 0; b < 4; ++b)
+    if (dst[b])
+      for (int j = 0; j < 3; ++j) dst[b][j] = src[b][j];
   if (singular) *singular = sing;
   return Status::ok;
 }
 
-}  // namespace
-
-RowGridFn row_grid_kernel(bool du, bool dv, bool normal, bool canal) {
-#define CYC_K(k) &eval_row_grid<(k & 8) != 0, (k & 4) != 0, (k & 2) != 0, (k & 1) != 0>
-  static const RowGridFn table[16] = {CYC_K(0),  CYC_K(1),  CYC_K(2),  CYC_K(3),
-                                      CYC_K(4),  CYC_K(5),  CYC_K(6),  CYC_K(7),
-                                      CYC_K(8),  CYC_K(9),  CYC_K(10), CYC_K(11),
-                                      CYC_K(12), CYC_K(13), CYC_K(14), CYC_K(15)};
-#undef CYC_K
-  return table[(du ? 8 : 0) | (dv ? 4 : 0) | (normal ? 2 : 0) | (canal ? 1 : 0)];
+// One point of a row through the kernel of the wanted outputs.
+Status eval_one(const Surface& S, const CircleRow& r, double v, const EvalOut& out,
+                bool zero_singular_normal, bool* singular) {
+  const bool canal = S.is_canal_by_construction();
+  PointResult P;
+  kernels().point[kernel_index(out.du, out.dv, out.normal, canal)](r, v, P);
+  return write_point(P, out, canal, zero_singular_normal, singular);
 }
+
+}  // namespace
 
 Status Surface::row(double u, bool with_du, CircleRow& r) const {
   if (!input_ok(u)) return Status::not_finite;
   CircleRow R;
+  if (f_constant) {  // the compiled frame straight to rotation data
+    const double f4[4] = {f.alpha.c[0], f.beta.c[0], f.gamma.c[0], f.delta.c[0]};
+    if (kernels().frame_row[with_du](compiled, f4, u, r)) return Status::ok;
+  }
   if (with_du) {
     CircleFrame<Taylor<double, 1>> F;
     if (Status st = frame<1>(u, F); st != Status::ok) return st;
@@ -116,7 +108,15 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
 
 Status Surface::eval(double u, double v, const EvalOut& out) const {
   if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
-  const bool with_du = out.du || (out.normal && !is_canal_by_construction());
+  const bool canal = is_canal_by_construction();
+  if (f_constant) {  // the fast path: compiled frame to point in one kernel
+    const double f4[4] = {f.alpha.c[0], f.beta.c[0], f.gamma.c[0], f.delta.c[0]};
+    PointResult P;
+    if (kernels().frame_point[kernel_index(out.du, out.dv, out.normal, canal)](compiled, f4,
+                                                                               u, v, P))
+      return write_point(P, out, canal, false, nullptr);
+  }
+  const bool with_du = out.du || (out.normal && !canal);
   CircleRow r;
   if (Status st = row(u, with_du, r); st != Status::ok) return st;
   return eval_one(*this, r, v, out, false, nullptr);
@@ -144,13 +144,23 @@ Status Surface::eval_grid(const double* us, std::size_t nu, const double* vs,
   CircleRow r;
   for (std::size_t i = 0; i < nu; ++i)
     if (Status st = row(us[i], with_du, r); st != Status::ok) return st;
-  // Pass 2: evaluate row by row with the kernel specialized for the outputs.
-  const RowGridFn kernel =
-      row_grid_kernel(du.data, dv.data, normals.data, is_canal_by_construction());
+  // Pass 2: evaluate blocks of rows with the kernel specialized for the
+  // outputs. Outputs larger than the caches are written with non-temporal
+  // stores (they would be evicted before the caller reads them anyway).
+  GridOut out{points, du, dv, normals, false};
+  const std::size_t bytes = nu * nv * 24 *
+      ((points.data != nullptr) + (du.data != nullptr) + (dv.data != nullptr) +
+       (normals.data != nullptr));
+  out.stream = bytes >= kStreamingBytes;
+  const GridBlockFn kernel = kernels().grid[kernel_index(
+      du.data != nullptr, dv.data != nullptr, normals.data != nullptr,
+      is_canal_by_construction())];
   std::size_t count = 0;
-  for (std::size_t i = 0; i < nu; ++i) {
-    row(us[i], with_du, r);
-    count += kernel(r, vs, nv, i * nv, points, du, dv, normals);
+  CircleRow block[kGridBlockRows];
+  for (std::size_t i0 = 0; i0 < nu; i0 += kGridBlockRows) {
+    const int n = int(std::min<std::size_t>(kGridBlockRows, nu - i0));
+    for (int i = 0; i < n; ++i) row(us[i0 + i], with_du, block[i]);
+    count += kernel(block, n, i0, vs, nv, out);
   }
   if (singular) *singular = count;
   return Status::ok;
@@ -316,18 +326,23 @@ void compile_frames(Surface& S) {
           : exact_prrs_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
   if (st != Status::ok) return;
   const ExactVec3* src[3] = {&E.o, &E.a, &E.p};
-  CompiledPoly* dst[3] = {C.o, C.a, C.p};
-  for (int i = 0; i < 3; ++i)
-    if (!fit(src[i]->x, dst[i][0]) || !fit(src[i]->y, dst[i][1]) ||
-        !fit(src[i]->z, dst[i][2]) || !fit(src[i]->w, dst[i][3]))
+  Lanes4* dst[3] = {&C.o, &C.a, &C.p};
+  CompiledPoly weight_o;
+  for (int i = 0; i < 3; ++i) {
+    CompiledPoly xyzw[4];
+    if (!fit(src[i]->x, xyzw[0]) || !fit(src[i]->y, xyzw[1]) ||
+        !fit(src[i]->z, xyzw[2]) || !fit(src[i]->w, xyzw[3]))
       return;
+    dst[i]->assign(xyzw);
+    if (i == 0) weight_o = xyzw[3];
+  }
   C.axis_is_spine_derivative = S.kind == SurfaceKind::prcs;
   C.valid = true;
   // Sample: D(t) range for the trust floor, and agreement with the reference.
   double dmax = 0;
   for (int k = 0; k < kDomainSamples; ++k) {
     const double t = -1.0 + 2.0 * double(k) / double(kDomainSamples - 1);
-    dmax = std::max(dmax, std::abs(C.o[3](t)));
+    dmax = std::max(dmax, std::abs(weight_o(t)));
   }
   C.det_floor = 1e-8 * dmax;
   if (!(dmax > 0)) return;

@@ -1,0 +1,269 @@
+// The evaluator's kernels (evaluator.hpp), compiled for two instruction
+// sets: the x86-64 baseline (SSE2) and AVX2, chosen once from the CPU.
+//
+// Each kernel is a template over the wanted outputs. The exported variants
+// are thin wrappers marked `flatten`, so the whole kernel is inlined into
+// each wrapper and compiled with that wrapper's target; no code compiled for
+// AVX2 is ever shared (as an out-of-line template instance) with the
+// baseline path. The core is compiled with -ffp-contract=off: vector lanes
+// round exactly like scalar operations, so both variants, and the grid and
+// single-point paths, give identical bits (tested).
+#include "cyclide/evaluator.hpp"
+
+#include "cyclide/compiled_frame.hpp"
+
+#include <cstdint>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define CYC_X86_64 1
+#define CYC_AVX2_TARGET __attribute__((flatten, target("avx2,fma")))
+#endif
+
+#if defined(__GNUC__)
+#define CYC_FLATTEN __attribute__((flatten))
+#else
+#define CYC_FLATTEN
+#endif
+
+namespace cyclide {
+inline namespace v0 {
+
+namespace {
+
+// One chunk of results in structure-of-arrays form (vectorizes).
+struct Chunk {
+  double x[3][kChunk], xu[3][kChunk], xv[3][kChunk], n[3][kChunk];
+  double singular[kChunk];
+};
+
+// Evaluate the chunk's circle parameters s1, s0 (count <= kChunk) on a row.
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
+CYC_ALWAYS_INLINE void eval_chunk(const CircleRow& row, const double* s1, const double* s0,
+                                  int count, Chunk& out) {
+  const RotationData R = row.r, D = row.r_u;  // local copies: no aliasing with out
+  const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
+  const double inv_radius = row.inv_radius;
+  // Ringed normals in a second loop over x_u and the v-direction: one loop
+  // doing both has a dependency chain (division, cross product, square root,
+  // division) too long for the CPU to overlap iterations.
+  constexpr bool split = NORMAL && !CANAL;
+  constexpr bool du = DU || split, dv = DV || split;
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+  for (int i = 0; i < count; ++i) {
+    PointResult P;
+    eval_point<du, dv, NORMAL && !split, CANAL>(R, D, k, inv_radius, s1[i], s0[i], P);
+    for (int j = 0; j < 3; ++j) {
+      out.x[j][i] = P.x[j];
+      if (du) out.xu[j][i] = P.xu[j];
+      if (dv) out.xv[j][i] = split ? P.xv_dir[j] : P.xv[j];
+      if (NORMAL && !split) out.n[j][i] = P.n[j];
+    }
+  }
+  if (split) {
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep
+#endif
+    for (int i = 0; i < count; ++i) {
+      const double xu[3] = {out.xu[0][i], out.xu[1][i], out.xu[2][i]};
+      const double xv[3] = {out.xv[0][i], out.xv[1][i], out.xv[2][i]};
+      double n[3];
+      ringed_normal(xu, xv, n, out.singular[i]);
+      for (int j = 0; j < 3; ++j) {
+        out.n[j][i] = n[j];
+        if (DV) out.xv[j][i] = s0[i] * s0[i] * xv[j];
+      }
+    }
+  }
+}
+
+// Copy n doubles to dst with non-temporal stores where dst allows it: a
+// large grid's output does not fit in the caches, and ordinary stores would
+// first read every line they write (SPEC §1b).
+CYC_ALWAYS_INLINE void stream_copy(double* dst, const double* src, int n) {
+  int i = 0;
+#if defined(CYC_X86_64)
+  if ((reinterpret_cast<std::uintptr_t>(dst) & 7) == 0) {
+    if (reinterpret_cast<std::uintptr_t>(dst) & 15) {
+      dst[0] = src[0];
+      i = 1;
+    }
+    for (; i + 2 <= n; i += 2) _mm_stream_pd(dst + i, _mm_loadu_pd(src + i));
+  }
+#endif
+  for (; i < n; ++i) dst[i] = src[i];
+}
+
+// Four doubles as one vector (GCC/Clang extension), 8-byte aligned.
+typedef double V4 __attribute__((vector_size(32), aligned(8)));
+
+// Points i..i+3 of SoA rows x, y, z as 12 consecutive doubles x0 y0 z0 x1 ...
+CYC_ALWAYS_INLINE void transpose4(const double* x, const double* y, const double* z,
+                                  double* dst) {
+  V4 X, Y, Z;
+  __builtin_memcpy(&X, x, sizeof X);
+  __builtin_memcpy(&Y, y, sizeof Y);
+  __builtin_memcpy(&Z, z, sizeof Z);
+#if defined(__clang__)
+  const V4 xy = __builtin_shufflevector(X, Y, 0, 4, 1, 5);  // x0 y0 x1 y1
+  const V4 yz = __builtin_shufflevector(Y, Z, 1, 5, 2, 6);  // y1 z1 y2 z2
+  const V4 xy3 = __builtin_shufflevector(X, Y, 3, 7, 3, 7); // x3 y3 x3 y3
+  const V4 o0 = __builtin_shufflevector(xy, Z, 0, 1, 4, 2);
+  const V4 o1 = __builtin_shufflevector(yz, X, 0, 1, 6, 2);
+  const V4 o2 = __builtin_shufflevector(Z, xy3, 2, 4, 5, 3);
+#else
+  typedef long long M4 __attribute__((vector_size(32)));
+  const V4 xy = __builtin_shuffle(X, Y, M4{0, 4, 1, 5});
+  const V4 yz = __builtin_shuffle(Y, Z, M4{1, 5, 2, 6});
+  const V4 xy3 = __builtin_shuffle(X, Y, M4{3, 7, 3, 7});
+  const V4 o0 = __builtin_shuffle(xy, Z, M4{0, 1, 4, 2});
+  const V4 o1 = __builtin_shuffle(yz, X, M4{0, 1, 6, 2});
+  const V4 o2 = __builtin_shuffle(Z, xy3, M4{2, 4, 5, 3});
+#endif
+  __builtin_memcpy(dst, &o0, sizeof o0);
+  __builtin_memcpy(dst + 4, &o1, sizeof o1);
+  __builtin_memcpy(dst + 8, &o2, sizeof o2);
+}
+
+// Store chunk entries [0, count) of one output at indices k0 + i.
+CYC_ALWAYS_INLINE void store(const double (*soa)[kChunk], int count, const Strided3& b,
+                             std::size_t k0, bool stream) {
+  double* p = b.data + k0 * b.stride;
+  if (b.stride == 3) {
+    // Contiguous: transpose four points at a time (into the caller's buffer,
+    // or into L1 scratch that is then streamed out).
+    double stage[3 * kChunk];
+    double* dst = stream ? stage : p;
+    int i = 0;
+    for (; i + 4 <= count; i += 4) transpose4(soa[0] + i, soa[1] + i, soa[2] + i, dst + 3 * i);
+    for (; i < count; ++i)
+      for (int j = 0; j < 3; ++j) dst[3 * i + j] = soa[j][i];
+    if (stream) stream_copy(p, stage, 3 * count);
+    return;
+  }
+  for (int i = 0; i < count; ++i, p += b.stride) {
+    p[0] = soa[0][i];
+    p[1] = soa[1][i];
+    p[2] = soa[2][i];
+  }
+}
+
+// A block of rows: per chunk of v the circle parameters are formed once and
+// used by every row of the block.
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
+std::size_t grid_block(const CircleRow* rows, int nrows, std::size_t first_row,
+                       const double* vs, std::size_t nv, const GridOut& out) {
+  Chunk c;
+  double s1[kChunk], s0[kChunk];
+  std::size_t singular = 0;
+  for (std::size_t j = 0; j < nv; j += kChunk) {
+    const int count = int(nv - j < std::size_t(kChunk) ? nv - j : kChunk);
+    for (int i = 0; i < count; ++i) circle_parameter(vs[j + i], s1[i], s0[i]);
+    for (int r = 0; r < nrows; ++r) {
+      eval_chunk<DU, DV, NORMAL, CANAL>(rows[r], s1, s0, count, c);
+      if (NORMAL && !CANAL)
+        for (int i = 0; i < count; ++i) singular += c.singular[i] != 0.0;
+      const std::size_t k0 = (first_row + std::size_t(r)) * nv + j;
+      if (out.points.data) store(c.x, count, out.points, k0, out.stream);
+      if (DU) store(c.xu, count, out.du, k0, out.stream);
+      if (DV) store(c.xv, count, out.dv, k0, out.stream);
+      if (NORMAL) store(c.n, count, out.normals, k0, out.stream);
+    }
+  }
+#if defined(CYC_X86_64)
+  if (out.stream) _mm_sfence();  // order the non-temporal stores before returning
+#endif
+  return singular;
+}
+
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
+CYC_ALWAYS_INLINE void point(const CircleRow& row, double v, PointResult& P) {
+  double s1, s0;
+  circle_parameter(v, s1, s0);
+  const RotationData& R = row.r;
+  const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
+  eval_point<DU, DV, NORMAL, CANAL>(R, row.r_u, k, row.inv_radius, s1, s0, P);
+}
+
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
+CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4], double u,
+                                   double v, PointResult& P) {
+  constexpr bool with_du = DU || (NORMAL && !CANAL);
+  CircleRow row;
+  if (!F.row<with_du, NORMAL && CANAL>(u, f4, row)) return false;
+  point<DU, DV, NORMAL, CANAL>(row, v, P);
+  return true;
+}
+
+// ------------------------------------------------------------ variants
+
+#define CYC_FLAGS(i) ((i) & 8) != 0, ((i) & 4) != 0, ((i) & 2) != 0, ((i) & 1) != 0
+#define CYC_TABLE(fn)                                                              \
+  {fn<CYC_FLAGS(0)>,  fn<CYC_FLAGS(1)>,  fn<CYC_FLAGS(2)>,  fn<CYC_FLAGS(3)>,  \
+   fn<CYC_FLAGS(4)>,  fn<CYC_FLAGS(5)>,  fn<CYC_FLAGS(6)>,  fn<CYC_FLAGS(7)>,  \
+   fn<CYC_FLAGS(8)>,  fn<CYC_FLAGS(9)>,  fn<CYC_FLAGS(10)>, fn<CYC_FLAGS(11)>, \
+   fn<CYC_FLAGS(12)>, fn<CYC_FLAGS(13)>, fn<CYC_FLAGS(14)>, fn<CYC_FLAGS(15)>}
+
+// The wrappers of one variant: NAME is its suffix, ATTR its attributes.
+#define CYC_VARIANT(NAME, ATTR, LABEL)                                                   \
+  template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
+  ATTR std::size_t grid_##NAME(const CircleRow* rows, int nrows, std::size_t first_row,  \
+                               const double* vs, std::size_t nv, const GridOut& out) {   \
+    return grid_block<DU, DV, NORMAL, CANAL>(rows, nrows, first_row, vs, nv, out);       \
+  }                                                                                      \
+  template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
+  ATTR void point_##NAME(const CircleRow& row, double v, PointResult& P) {               \
+    point<DU, DV, NORMAL, CANAL>(row, v, P);                                             \
+  }                                                                                      \
+  template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
+  ATTR bool frame_point_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,   \
+                               double v, PointResult& P) {                               \
+    return frame_point<DU, DV, NORMAL, CANAL>(F, f4, u, v, P);                           \
+  }                                                                                      \
+  template <bool WITH_DU>                                                                \
+  ATTR bool frame_row_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,     \
+                             CircleRow& row) {                                           \
+    return F.row<WITH_DU>(u, f4, row);                                                   \
+  }                                                                                      \
+  const Kernels k_##NAME = {LABEL, CYC_TABLE(grid_##NAME), CYC_TABLE(point_##NAME),      \
+                            CYC_TABLE(frame_point_##NAME),                               \
+                            {frame_row_##NAME<false>, frame_row_##NAME<true>}};
+
+CYC_VARIANT(baseline, CYC_FLATTEN, "baseline")
+#if defined(CYC_AVX2_TARGET)
+CYC_VARIANT(avx2, CYC_AVX2_TARGET, "x86-64-v3 (AVX2)")
+#endif
+
+#undef CYC_VARIANT
+#undef CYC_TABLE
+#undef CYC_FLAGS
+
+const Kernels* choose_kernels() {
+#if defined(CYC_AVX2_TARGET)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return &k_avx2;
+#endif
+  return &k_baseline;
+}
+
+}  // namespace
+
+const Kernels& kernels() {
+  static const Kernels* const chosen = choose_kernels();
+  return *chosen;
+}
+
+const Kernels& baseline_kernels() { return k_baseline; }
+
+const Kernels* avx2_kernels() {
+#if defined(CYC_AVX2_TARGET)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return &k_avx2;
+#endif
+  return nullptr;
+}
+
+}  // namespace v0
+}  // namespace cyclide
