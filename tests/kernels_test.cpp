@@ -71,7 +71,8 @@ TEST(Kernels, VariantsAndFastPathsAgreeWithTheReference) {
     const Surface s = make(canal);
     Surface ref = s;
     ref.compiled.valid = false;  // the plane-intersection frames
-    const double f4[4] = {s.f.alpha.c[0], s.f.beta.c[0], s.f.gamma.c[0], s.f.delta.c[0]};
+    double f4[4];
+    s.constant_f(f4);
     for (int k = 0; k <= 20; ++k) {
       const double u = -1 + 0.1 * k;
       CircleRow row;

@@ -54,6 +54,14 @@ class Surface {
 
   bool is_canal_by_construction() const { return kind == SurfaceKind::prcs; }
 
+  // f's coefficients (alpha, beta, gamma, delta) when f_constant.
+  void constant_f(double (&f4)[4]) const {
+    f4[0] = f.alpha.c[0];
+    f4[1] = f.beta.c[0];
+    f4[2] = f.gamma.c[0];
+    f4[3] = f.delta.c[0];
+  }
+
   // The k-th of the kDomainSamples equally spaced parameters of the domain
   // (creation scan, compiled-frame check, canal test, closest-point start).
   double sample(int k) const {

@@ -17,7 +17,7 @@
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 #define CYC_X86_64 1
-#define CYC_AVX2_TARGET __attribute__((flatten, target("avx2,fma")))
+#define CYC_AVX2_TARGET __attribute__((flatten, target("avx2")))
 #endif
 
 #if defined(__GNUC__)
@@ -240,29 +240,21 @@ CYC_VARIANT(avx2, CYC_AVX2_TARGET, "x86-64-v3 (AVX2)")
 #undef CYC_TABLE
 #undef CYC_FLAGS
 
-const Kernels* choose_kernels() {
-#if defined(CYC_AVX2_TARGET)
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return &k_avx2;
-#endif
-  return &k_baseline;
-}
-
 }  // namespace
-
-const Kernels& kernels() {
-  static const Kernels* const chosen = choose_kernels();
-  return *chosen;
-}
 
 const Kernels& baseline_kernels() { return k_baseline; }
 
 const Kernels* avx2_kernels() {
 #if defined(CYC_AVX2_TARGET)
   __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return &k_avx2;
+  if (__builtin_cpu_supports("avx2")) return &k_avx2;
 #endif
   return nullptr;
+}
+
+const Kernels& kernels() {
+  static const Kernels* const chosen = avx2_kernels() ? avx2_kernels() : &k_baseline;
+  return *chosen;
 }
 
 }  // namespace v0

@@ -85,7 +85,8 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
   if (!input_ok(u)) return Status::not_finite;
   CircleRow R;
   if (f_constant) {  // the compiled frame straight to rotation data
-    const double f4[4] = {f.alpha.c[0], f.beta.c[0], f.gamma.c[0], f.delta.c[0]};
+    double f4[4];
+    constant_f(f4);
     if (kernels().frame_row[with_du](compiled, f4, u, r)) return Status::ok;
   }
   if (with_du) {
@@ -110,7 +111,8 @@ Status Surface::eval(double u, double v, const EvalOut& out) const {
   if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
   const bool canal = is_canal_by_construction();
   if (f_constant) {  // the fast path: compiled frame to point in one kernel
-    const double f4[4] = {f.alpha.c[0], f.beta.c[0], f.gamma.c[0], f.delta.c[0]};
+    double f4[4];
+    constant_f(f4);
     PointResult P;
     if (kernels().frame_point[kernel_index(out.du, out.dv, out.normal, canal)](compiled, f4,
                                                                                u, v, P))
