@@ -588,3 +588,33 @@ int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }
+
+// Darboux cyclides, inversion and DCMC (seed 000 §5-6) are allocation-free
+// too: the DCMC solve uses fixed-size Eigen matrices on the stack.
+TEST_F(AllocFree, DarbouxInversionAndDcmc) {
+  const cyc_line lines[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  const cyc_inversion inv = {{0.3, 0.9, -0.4}, 1.3};
+  const cyc_general_sphere sphere = {1, {0, 0, 0}, -1};
+  const cyc_circle_or_line circle = {0, {0, 0, 0}, {0, 0, 1}, 1.0};
+  cyc_darboux base, quadric, img;
+  cyc_general_sphere s2;
+  cyc_circle_or_line c2;
+  double n[3], value = 0, grad[3], x[3] = {0.5, -0.25, 1.0}, y[3], p[3], pu[3], pv[3], pn[3];
+  int type = -1, bad = 0;
+  const Heap h = measure([&] {
+    for (int r = 0; r < kRepeat; ++r) {
+      bad += cyc_dcmc(ctx, lines, n, &base, &quadric) != CYC_OK;
+      bad += cyc_darboux_eval(ctx, &base, x, &value, grad) != CYC_OK;
+      bad += cyc_darboux_classify(ctx, &base, &type) != CYC_OK;
+      bad += cyc_invert_darboux(ctx, &inv, &base, &img) != CYC_OK;
+      bad += cyc_invert_point(ctx, &inv, x, y) != CYC_OK;
+      bad += cyc_invert_sphere(ctx, &inv, &sphere, &s2) != CYC_OK;
+      bad += cyc_invert_circle(ctx, &inv, &circle, &c2) != CYC_OK;
+      bad += cyc_surface_eval_inverted(ctx, prcs, &inv, 0.3, 0.1 * r, p, pu, pv, pn) != CYC_OK;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(type, CYC_DARBOUX_PARABOLIC);
+  EXPECT_EQ(h.allocations, 0);
+  EXPECT_EQ(h.frees, 0);
+}

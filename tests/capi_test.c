@@ -328,6 +328,10 @@ static const struct {
     {CYC_E_NOT_CANAL, "CYC_E_NOT_CANAL"},
     {CYC_E_SINGULAR_POINT, "CYC_E_SINGULAR_POINT"},
     {CYC_E_DEGENERATE_RINGED, "CYC_E_DEGENERATE_RINGED"},
+    {CYC_E_PARALLEL_LINES, "CYC_E_PARALLEL_LINES"},
+    {CYC_E_NO_COMMON_NORMAL, "CYC_E_NO_COMMON_NORMAL"},
+    {CYC_E_RANK_DEFICIENT, "CYC_E_RANK_DEFICIENT"},
+    {CYC_E_AT_INVERSION_CENTER, "CYC_E_AT_INVERSION_CENTER"},
     {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
     {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
     {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
@@ -338,7 +342,7 @@ static const struct {
 
 static void test_versions_and_names(void) {
   size_t i, j;
-  const int unknown[] = {-1, 6, 99, 107, 199, 201, 302, 402, 12345};
+  const int unknown[] = {-1, 6, 99, 111, 199, 201, 302, 402, 12345};
   CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
   CHECK(cyc_version_string() != NULL);
   CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
@@ -351,6 +355,8 @@ static void test_versions_and_names(void) {
   CHECK(CYC_E_DEPENDENT_PLANES == 100 && CYC_E_ZERO_TANGENT == 101 &&
         CYC_E_COLLINEAR_POINTS == 102 && CYC_E_DEGENERATE_CIRCLE_PARAMETER == 103 &&
         CYC_E_NOT_CANAL == 104 && CYC_E_SINGULAR_POINT == 105 && CYC_E_DEGENERATE_RINGED == 106);
+  CHECK(CYC_E_PARALLEL_LINES == 107 && CYC_E_NO_COMMON_NORMAL == 108 &&
+        CYC_E_RANK_DEFICIENT == 109 && CYC_E_AT_INVERSION_CENTER == 110);
   CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
         CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
   CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2);
@@ -1864,6 +1870,137 @@ static void test_construction_errors(cyc_context* ctx) {
   cyc_curve_destroy(ctx, ex3p3);
 }
 
+/* ------------------------------------------------------------ Darboux cyclides */
+
+/* Seed 000 Example 4 (34)-(35) and Example 2 continued (39) through the
+ * Darboux, inversion and DCMC entry points; NULLs, non-finite input,
+ * degenerate input statuses, untouched outputs. */
+static void test_darboux(cyc_context* ctx) {
+  /* (34): l1 = (u,0,0), l2 = (0,u,1), l3 = (u,u,2). */
+  const cyc_line lines[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  const cyc_line parallel[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {2, 0, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  const cyc_line skew[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {0, 1, 1}}};
+  /* (39): 4 z X.X - 8 y^2 - 3 z^2 - 6 x y - z. */
+  const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
+  const cyc_inversion inv = {{0.3, 0.9, -0.4}, 1.3}, on = {{0.7, 0, 0}, 1.3};
+  const cyc_inversion bad_inv = {{0, 0, 0}, 0.0}, nan_inv = {{NAN, 0, 0}, 1.0};
+  cyc_darboux base, quadric, img, back;
+  double n[3], value = SENT, grad[3], x[3], y[3];
+  int type = -1, i, k;
+  ex2 e;
+
+  /* DCMC: every member contains the lines; the quadric direction too. */
+  fill(n, 3);
+  fill(base.k, CYC_DARBOUX_COEFFS);
+  fill(quadric.k, CYC_DARBOUX_COEFFS);
+  CHECK_STATUS(ctx, cyc_dcmc(ctx, parallel, n, &base, &quadric), CYC_E_PARALLEL_LINES);
+  CHECK_STATUS(ctx, cyc_dcmc(ctx, skew, n, &base, &quadric), CYC_E_NO_COMMON_NORMAL);
+  CHECK_STATUS(ctx, cyc_dcmc(ctx, NULL, n, &base, &quadric), CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_dcmc(ctx, lines, n, NULL, &quadric), CYC_E_NULL_ARGUMENT);
+  CHECK(untouched(n, 3) && untouched(base.k, CYC_DARBOUX_COEFFS) &&
+        untouched(quadric.k, CYC_DARBOUX_COEFFS));
+  CHECK_STATUS(ctx, cyc_dcmc(ctx, lines, n, &base, &quadric), CYC_OK);
+  CHECK(fabs(fabs(n[2]) - 1) < TOL);
+  CHECK_STATUS(ctx, cyc_darboux_classify(ctx, &base, &type), CYC_OK);
+  CHECK(type == CYC_DARBOUX_PARABOLIC);
+  for (i = 0; i < 3; ++i)
+    for (k = -2; k <= 2; ++k) {
+      cyc_darboux m = base;
+      int j;
+      for (j = 0; j < CYC_DARBOUX_COEFFS; ++j) m.k[j] += 0.7 * quadric.k[j];
+      x[0] = lines[i].point[0] + k * lines[i].direction[0];
+      x[1] = lines[i].point[1] + k * lines[i].direction[1];
+      x[2] = lines[i].point[2] + k * lines[i].direction[2];
+      CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &m, x, &value, NULL), CYC_OK);
+      CHECK(fabs(value) < 1e-11);
+    }
+
+  /* Eval and classify errors. */
+  value = SENT;
+  fill(grad, 3);
+  x[0] = NAN;
+  x[1] = x[2] = 0;
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &c39, x, &value, grad), CYC_E_NOT_FINITE);
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, NULL, x, &value, grad), CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &c39, x, NULL, grad), CYC_E_NULL_ARGUMENT);
+  CHECK(value == SENT && untouched(grad, 3));
+  CHECK_STATUS(ctx, cyc_darboux_classify(ctx, &c39, NULL), CYC_E_NULL_ARGUMENT);
+  /* l3 of (41), (3u, -u, -1)/4 at u = 2, lies on (39); the gradient is finite. */
+  x[0] = 1.5;
+  x[1] = -0.5;
+  x[2] = -0.25;
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &c39, x, &value, grad), CYC_OK);
+  CHECK(fabs(value) < TOL && finite_all(grad, 3) && norm3(grad) > 0.1);
+
+  /* Inversion of points. */
+  fill(y, 3);
+  CHECK_STATUS(ctx, cyc_invert_point(ctx, &inv, inv.center, y), CYC_E_AT_INVERSION_CENTER);
+  CHECK_STATUS(ctx, cyc_invert_point(ctx, &bad_inv, x, y), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_invert_point(ctx, &nan_inv, x, y), CYC_E_NOT_FINITE);
+  CHECK_STATUS(ctx, cyc_invert_point(ctx, NULL, x, y), CYC_E_NULL_ARGUMENT);
+  CHECK(untouched(y, 3));
+
+  /* A center on the cyclide (on l1 of (39)) gives phi0 = 0; a center off it
+   * a quartic whose points are the images; inverting back gives (39). */
+  CHECK_STATUS(ctx, cyc_invert_darboux(ctx, &on, &c39, &img), CYC_OK);
+  CHECK(fabs(img.k[0]) < 1e-14);
+  fill(img.k, CYC_DARBOUX_COEFFS);
+  CHECK_STATUS(ctx, cyc_invert_darboux(ctx, &bad_inv, &c39, &img), CYC_E_INVALID_ARGUMENT);
+  CHECK(untouched(img.k, CYC_DARBOUX_COEFFS));
+  CHECK_STATUS(ctx, cyc_invert_darboux(ctx, &inv, &c39, &img), CYC_OK);
+  CHECK_STATUS(ctx, cyc_darboux_classify(ctx, &img, &type), CYC_OK);
+  CHECK(type == CYC_DARBOUX_QUARTIC);
+  CHECK_STATUS(ctx, cyc_invert_point(ctx, &inv, x, y), CYC_OK);
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &img, y, &value, grad), CYC_OK);
+  CHECK(fabs(value) < 1e-11 * (1 + norm3(grad)));
+  CHECK_STATUS(ctx, cyc_invert_darboux(ctx, &inv, &img, &back), CYC_OK);
+  for (i = 0; i < CYC_DARBOUX_COEFFS; ++i) CHECK(fabs(back.k[i] * 4 / back.k[3] - c39.k[i]) < 1e-10);
+
+  /* Spheres and circles. */
+  {
+    /* The sphere of radius 1 through the center maps to a plane. */
+    const cyc_general_sphere s = {1, {-2 * 1.3, -2 * 0.9, 2 * 0.4},
+                                  1.3 * 1.3 + 0.9 * 0.9 + 0.4 * 0.4 - 1};
+    const cyc_circle_or_line c = {0, {1.3, 0.9, -0.4}, {0, 0, 1}, 1.0};
+    const cyc_circle_or_line bad_c = {0, {1.3, 0.9, -0.4}, {0, 0, 0}, 1.0};
+    cyc_general_sphere p;
+    cyc_circle_or_line l, cb;
+    CHECK_STATUS(ctx, cyc_invert_sphere(ctx, &inv, &s, &p), CYC_OK);
+    CHECK(fabs(p.a) < 1e-14 && norm3(p.b) > 0.1);
+    CHECK_STATUS(ctx, cyc_invert_sphere(ctx, &inv, NULL, &p), CYC_E_NULL_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_invert_circle(ctx, &inv, &c, &l), CYC_OK);
+    CHECK(l.is_line == 1);
+    CHECK_STATUS(ctx, cyc_invert_circle(ctx, &inv, &l, &cb), CYC_OK);
+    CHECK(cb.is_line == 0 && fabs(cb.radius - 1) < 1e-12 && fabs(cb.point[0] - 1.3) < 1e-12);
+    l.radius = SENT;
+    CHECK_STATUS(ctx, cyc_invert_circle(ctx, &inv, &bad_c, &l), CYC_E_INVALID_ARGUMENT);
+    CHECK(l.radius == SENT);
+  }
+
+  /* A PRCS surface carried through the inversion: the point is the image of
+   * x(u, v); the partials are orthogonal to the reflected normal. */
+  ex2_create(ctx, &e);
+  if (e.S) {
+    double p[3], pu[3], pv[3], pn[3], q[3];
+    CHECK_STATUS(ctx, cyc_surface_eval_inverted(ctx, e.S, &inv, 0.3, 0.4, p, pu, pv, pn), CYC_OK);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, 0.3, 0.4, x, NULL, NULL, NULL), CYC_OK);
+    CHECK_STATUS(ctx, cyc_invert_point(ctx, &inv, x, q), CYC_OK);
+    CHECK(fabs(p[0] - q[0]) + fabs(p[1] - q[1]) + fabs(p[2] - q[2]) < 1e-13);
+    CHECK(fabs(norm3(pn) - 1) < 1e-12);
+    CHECK(fabs(dot3(pn, pu)) < 1e-10 * norm3(pu) && fabs(dot3(pn, pv)) < 1e-10 * norm3(pv));
+    /* On (39) inverted. */
+    CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &img, p, &value, grad), CYC_OK);
+    CHECK(fabs(value) < 1e-10 * (1 + norm3(grad)));
+    fill(p, 3);
+    CHECK_STATUS(ctx, cyc_surface_eval_inverted(ctx, e.S, &inv, NAN, 0.4, p, NULL, NULL, NULL),
+                 CYC_E_NOT_FINITE);
+    CHECK_STATUS(ctx, cyc_surface_eval_inverted(ctx, e.S, NULL, 0.3, 0.4, p, NULL, NULL, NULL),
+                 CYC_E_NULL_ARGUMENT);
+    CHECK(untouched(p, 3));
+    ex2_destroy(ctx, &e);
+  }
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -1883,6 +2020,7 @@ int main(void) {
     test_example2(ctx);
     test_example3(ctx);
     test_construction_errors(ctx);
+    test_darboux(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

@@ -117,6 +117,13 @@ inline const char* explain(Status s) {
     case Status::not_canal: return "the surface is not a canal surface by construction";
     case Status::singular_point: return "the normal is undefined here (x_u x x_v = 0)";
     case Status::degenerate_ringed: return "n . c' = 0: the sphere family (3) is undefined";
+    case Status::parallel_lines: return "two of the lines are parallel (DCMC needs non-parallel lines)";
+    case Status::no_common_normal:
+      return "the line directions have no common normal (DCMC needs lines in parallel planes)";
+    case Status::rank_deficient:
+      return "the linear system has more free parameters than expected (degenerate input)";
+    case Status::at_inversion_center:
+      return "the point is the inversion center: its image is at infinity";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -3,6 +3,7 @@
 // last status and message in the context, and calls the error handler.
 // Outputs are written only after everything has succeeded.
 #include "capi_internal.hpp"
+#include "cyclide/darboux.hpp"
 #include "cyclide/hermite.hpp"
 
 using namespace cyclide;
@@ -22,6 +23,10 @@ CYC_SAME(CYC_E_DEGENERATE_CIRCLE_PARAMETER, degenerate_circle_parameter);
 CYC_SAME(CYC_E_NOT_CANAL, not_canal);
 CYC_SAME(CYC_E_SINGULAR_POINT, singular_point);
 CYC_SAME(CYC_E_DEGENERATE_RINGED, degenerate_ringed);
+CYC_SAME(CYC_E_PARALLEL_LINES, parallel_lines);
+CYC_SAME(CYC_E_NO_COMMON_NORMAL, no_common_normal);
+CYC_SAME(CYC_E_RANK_DEFICIENT, rank_deficient);
+CYC_SAME(CYC_E_AT_INVERSION_CENTER, at_inversion_center);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
@@ -47,6 +52,8 @@ const char* cyc_status_name(int status) {
     case CYC_E_DEPENDENT_PLANES: case CYC_E_ZERO_TANGENT: case CYC_E_COLLINEAR_POINTS:
     case CYC_E_DEGENERATE_CIRCLE_PARAMETER: case CYC_E_NOT_CANAL:
     case CYC_E_SINGULAR_POINT: case CYC_E_DEGENERATE_RINGED:
+    case CYC_E_PARALLEL_LINES: case CYC_E_NO_COMMON_NORMAL: case CYC_E_RANK_DEFICIENT:
+    case CYC_E_AT_INVERSION_CENTER:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));
@@ -508,3 +515,180 @@ int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surface, doubl
 }
 
 }  // extern "C"
+
+// ------------------------------------------------------------ Darboux cyclides
+
+static_assert(CYC_DARBOUX_COEFFS == kDarbouxCoeffs, "coefficient count");
+static_assert(CYC_DARBOUX_REDUCIBLE == int(DarbouxType::reducible), "type numbers");
+static_assert(CYC_DARBOUX_QUARTIC == int(DarbouxType::quartic), "type numbers");
+
+namespace {
+
+Outcome read_darboux(const char* fn, const cyc_darboux& in, Darboux& out) {
+  for (int i = 0; i < CYC_DARBOUX_COEFFS; ++i)
+    if (!input_ok(in.k[i]))
+      return fail(CYC_E_NOT_FINITE, "%s: coefficient %d is not finite or too large", fn, i);
+  std::memcpy(out.k, in.k, sizeof out.k);
+  return ok();
+}
+
+Outcome read_inversion(const char* fn, const cyc_inversion& in, Inversion& out) {
+  out.m = vec(in.center);
+  out.rho = in.radius;
+  return from_core(fn, check_inversion(out));
+}
+
+void put_darboux(cyc_darboux* out, const Darboux& D) {
+  std::memcpy(out->k, D.k, sizeof out->k);
+}
+
+}  // namespace
+
+int cyc_darboux_eval(cyc_context* ctx, const cyc_darboux* d, const double x[3], double* value,
+                     double gradient[3]) {
+  const char* fn = "cyc_darboux_eval";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(x);
+    REQUIRE(value);
+    Darboux D;
+    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    const Vec3d X = vec(x);
+    if (!input_ok(X)) return fail(CYC_E_NOT_FINITE, "%s: x is not finite or too large", fn);
+    const double v = D.value(X);
+    const Vec3d g = D.gradient(X);
+    if (!std::isfinite(v) || (gradient && !std::isfinite(g.sum())))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: %s", fn, explain(Status::numerical_overflow));
+    *value = v;
+    if (gradient) put3(gradient, g);
+    return ok();
+  });
+}
+
+int cyc_darboux_classify(cyc_context* ctx, const cyc_darboux* d, int* type) {
+  const char* fn = "cyc_darboux_classify";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(type);
+    Darboux D;
+    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    *type = int(darboux_type(D));
+    return ok();
+  });
+}
+
+int cyc_invert_point(cyc_context* ctx, const cyc_inversion* inv, const double x[3],
+                     double out[3]) {
+  const char* fn = "cyc_invert_point";
+  return run(ctx, fn, [&] {
+    REQUIRE(inv);
+    REQUIRE(x);
+    REQUIRE(out);
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    Vec3d Y;
+    if (Status s = invert_point(I, vec(x), Y); s != Status::ok) return from_core(fn, s);
+    put3(out, Y);
+    return ok();
+  });
+}
+
+int cyc_invert_sphere(cyc_context* ctx, const cyc_inversion* inv, const cyc_general_sphere* s,
+                      cyc_general_sphere* out) {
+  const char* fn = "cyc_invert_sphere";
+  return run(ctx, fn, [&] {
+    REQUIRE(inv);
+    REQUIRE(s);
+    REQUIRE(out);
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    GeneralSphere R;
+    if (Status st = invert_sphere(I, {s->a, vec(s->b), s->c}, R); st != Status::ok)
+      return from_core(fn, st);
+    out->a = R.A;
+    put3(out->b, R.B);
+    out->c = R.C;
+    return ok();
+  });
+}
+
+int cyc_invert_circle(cyc_context* ctx, const cyc_inversion* inv, const cyc_circle_or_line* c,
+                      cyc_circle_or_line* out) {
+  const char* fn = "cyc_invert_circle";
+  return run(ctx, fn, [&] {
+    REQUIRE(inv);
+    REQUIRE(c);
+    REQUIRE(out);
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    CircleOrLine R;
+    if (Status st = invert_circle(I, {c->is_line != 0, vec(c->point), vec(c->axis), c->radius}, R);
+        st != Status::ok)
+      return from_core(fn, st);
+    out->is_line = R.is_line ? 1 : 0;
+    put3(out->point, R.point);
+    put3(out->axis, R.axis);
+    out->radius = R.radius;
+    return ok();
+  });
+}
+
+int cyc_invert_darboux(cyc_context* ctx, const cyc_inversion* inv, const cyc_darboux* d,
+                       cyc_darboux* out) {
+  const char* fn = "cyc_invert_darboux";
+  return run(ctx, fn, [&] {
+    REQUIRE(inv);
+    REQUIRE(d);
+    REQUIRE(out);
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    Darboux D, R;
+    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    if (Status st = invert_darboux(I, D, R); st != Status::ok) return from_core(fn, st);
+    put_darboux(out, R);
+    return ok();
+  });
+}
+
+int cyc_surface_eval_inverted(cyc_context* ctx, const cyc_surface* surface,
+                              const cyc_inversion* inv, double u, double v, double point[3],
+                              double du[3], double dv[3], double normal[3]) {
+  const char* fn = "cyc_surface_eval_inverted";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(inv);
+    REQUIRE(point);
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    SurfacePoint P, R;
+    const EvalOut o{P.x.data(), du ? P.du.data() : nullptr, dv ? P.dv.data() : nullptr,
+                    normal ? P.normal.data() : nullptr};
+    if (Status s = surface->surface.eval(u, v, o); s != Status::ok)
+      return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
+    if (Status s = invert_surface_point(I, P, du, dv, normal, R); s != Status::ok)
+      return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
+    put3(point, R.x);
+    if (du) put3(du, R.du);
+    if (dv) put3(dv, R.dv);
+    if (normal) put3(normal, R.normal);
+    return ok();
+  });
+}
+
+int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_darboux* base,
+             cyc_darboux* quadric) {
+  const char* fn = "cyc_dcmc";
+  return run(ctx, fn, [&] {
+    REQUIRE(lines);
+    REQUIRE(base);
+    REQUIRE(quadric);
+    Line L[3];
+    for (int i = 0; i < 3; ++i) L[i] = {vec(lines[i].point), vec(lines[i].direction)};
+    DcmcFamily F;
+    if (Status s = dcmc(L, F); s != Status::ok) return from_core(fn, s);
+    if (normal) put3(normal, F.n);
+    put_darboux(base, F.base);
+    put_darboux(quadric, F.quadric);
+    return ok();
+  });
+}

@@ -21,6 +21,10 @@ enum class Status : int {
   not_canal = 104,          // canal-only query on a non-canal surface
   singular_point = 105,     // normal undefined (x_u x x_v = 0)
   degenerate_ringed = 106,  // eq. (3): n . c' = 0, sphere family undefined
+  parallel_lines = 107,     // DCMC: two of the input lines are parallel
+  no_common_normal = 108,   // DCMC: the line directions do not share a normal
+  rank_deficient = 109,     // a linear system has more freedom than expected
+  at_inversion_center = 110,  // a point at the inversion center (image at infinity)
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

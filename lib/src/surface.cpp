@@ -492,6 +492,10 @@ const char* status_name(Status s) noexcept {
     case Status::not_canal: return "CYC_E_NOT_CANAL";
     case Status::singular_point: return "CYC_E_SINGULAR_POINT";
     case Status::degenerate_ringed: return "CYC_E_DEGENERATE_RINGED";
+    case Status::parallel_lines: return "CYC_E_PARALLEL_LINES";
+    case Status::no_common_normal: return "CYC_E_NO_COMMON_NORMAL";
+    case Status::rank_deficient: return "CYC_E_RANK_DEFICIENT";
+    case Status::at_inversion_center: return "CYC_E_AT_INVERSION_CENTER";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -235,6 +235,96 @@ CYC_API int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface,
 CYC_API int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surface,
                                      double u, const double point[3], double* v);
 
+/* ------------------------------------------------ Darboux cyclides (seed 000 §5-6) */
+
+/** Number of coefficients of a Darboux cyclide. */
+#define CYC_DARBOUX_COEFFS 14
+
+/** A Darboux cyclide (31): phi0 (X.X)^2 + phi1 (X.X) + phi2 = 0 with
+ *  phi1 = lx x + ly y + lz z and phi2 = qxx x^2 + qyy y^2 + qzz z^2 + qxy xy
+ *  + qxz xz + qyz yz + bx x + by y + bz z + c; k[] holds, in this order,
+ *  phi0, lx, ly, lz, qxx, qyy, qzz, qxy, qxz, qyz, bx, by, bz, c (frozen). */
+typedef struct cyc_darboux {
+  double k[CYC_DARBOUX_COEFFS];
+} cyc_darboux;
+
+/** What a Darboux equation describes (frozen numbers). */
+enum cyc_darboux_type {
+  CYC_DARBOUX_ZERO = 0,      /* all coefficients zero */
+  CYC_DARBOUX_QUARTIC = 1,   /* phi0 != 0 */
+  CYC_DARBOUX_PARABOLIC = 2, /* phi0 = 0, phi1 != 0: a cubic */
+  CYC_DARBOUX_QUADRIC = 3,   /* phi0 = phi1 = 0 */
+  CYC_DARBOUX_PLANE = 4,
+  CYC_DARBOUX_CONSTANT = 5,  /* a nonzero constant: no point */
+  CYC_DARBOUX_REDUCIBLE = 6  /* plane x sphere, plane pair (detected cases) */
+};
+
+/** An inversion at the sphere with this center and radius > 0 (frozen). */
+typedef struct cyc_inversion {
+  double center[3];
+  double radius;
+} cyc_inversion;
+
+/** A generalized sphere a (X.X) + b.X + c = 0: a plane if a = 0 (frozen). */
+typedef struct cyc_general_sphere {
+  double a;
+  double b[3];
+  double c;
+} cyc_general_sphere;
+
+/** A circle (center `point`, unit plane normal `axis`, radius) or, if
+ *  is_line, the line through `point` with unit direction `axis` (frozen). */
+typedef struct cyc_circle_or_line {
+  int is_line;
+  double point[3];
+  double axis[3];
+  double radius;
+} cyc_circle_or_line;
+
+/** A line point + t direction (frozen). */
+typedef struct cyc_line {
+  double point[3];
+  double direction[3];
+} cyc_line;
+
+/** Value F(x) and gradient (may be NULL) of a Darboux equation. */
+CYC_API int cyc_darboux_eval(cyc_context* ctx, const cyc_darboux* d, const double x[3],
+                             double* value, double gradient[3]);
+/** The cyc_darboux_type of an equation (relative threshold 1e-12). */
+CYC_API int cyc_darboux_classify(cyc_context* ctx, const cyc_darboux* d, int* type);
+
+/** X' = center + radius^2 (X - center)/|X - center|^2;
+ *  CYC_E_AT_INVERSION_CENTER for X = center. */
+CYC_API int cyc_invert_point(cyc_context* ctx, const cyc_inversion* inv, const double x[3],
+                             double out[3]);
+/** The image of a sphere or plane (normalized: largest |coefficient| = 1). */
+CYC_API int cyc_invert_sphere(cyc_context* ctx, const cyc_inversion* inv,
+                              const cyc_general_sphere* s, cyc_general_sphere* out);
+/** The image of a circle or line: a circle, or a line when the input
+ *  passes through the center. */
+CYC_API int cyc_invert_circle(cyc_context* ctx, const cyc_inversion* inv,
+                              const cyc_circle_or_line* c, cyc_circle_or_line* out);
+/** The image of a Darboux cyclide, in closed form (normalized: largest
+ *  |coefficient| = 1). A center on the cyclide gives phi0 = 0 (§5). */
+CYC_API int cyc_invert_darboux(cyc_context* ctx, const cyc_inversion* inv,
+                               const cyc_darboux* d, cyc_darboux* out);
+/** x(u, v) of a surface carried through an inversion: the point, the
+ *  partials pushed forward by the inversion's differential and the unit
+ *  normal reflected accordingly. Outputs may be NULL except point. */
+CYC_API int cyc_surface_eval_inverted(cyc_context* ctx, const cyc_surface* surface,
+                                      const cyc_inversion* inv, double u, double v,
+                                      double point[3], double du[3], double dv[3],
+                                      double normal[3]);
+
+/** DCMC (§6): the parabolic Darboux cyclides through three mutually
+ *  non-parallel lines with a common normal n form the family
+ *  base + alpha * quadric (phi0 = 0, phi1 = n.X with |n| = 1; `quadric` is
+ *  a quadric through the lines). alpha is not canonical (ERRATA): compare
+ *  families by membership. normal may be NULL. Statuses:
+ *  CYC_E_PARALLEL_LINES, CYC_E_NO_COMMON_NORMAL, CYC_E_RANK_DEFICIENT. */
+CYC_API int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3],
+                     cyc_darboux* base, cyc_darboux* quadric);
+
 /* ------------------------------------------------------------ optimizer */
 
 /** 1 if this build includes the Ceres-based optimizer tier, else 0. The

@@ -21,6 +21,10 @@ enum cyc_status {
   CYC_E_NOT_CANAL = 104,         /* canal-only query on a ringed surface */
   CYC_E_SINGULAR_POINT = 105,    /* normal undefined at this point */
   CYC_E_DEGENERATE_RINGED = 106, /* eq. (3): n . c' = 0 at u */
+  CYC_E_PARALLEL_LINES = 107,    /* DCMC: two input lines are parallel */
+  CYC_E_NO_COMMON_NORMAL = 108,  /* DCMC: line directions share no normal */
+  CYC_E_RANK_DEFICIENT = 109,    /* a system has more freedom than expected */
+  CYC_E_AT_INVERSION_CENTER = 110, /* a point at the inversion center */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 

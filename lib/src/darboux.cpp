@@ -1,0 +1,384 @@
+#include "cyclide/darboux.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+
+#include "cyclide/curve.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+
+// ------------------------------------------------------------ the surface
+
+Eigen::Matrix3d Darboux::Q() const {
+  Eigen::Matrix3d M;
+  M << k[kQxx], 0.5 * k[kQxy], 0.5 * k[kQxz],  //
+      0.5 * k[kQxy], k[kQyy], 0.5 * k[kQyz],   //
+      0.5 * k[kQxz], 0.5 * k[kQyz], k[kQzz];
+  return M;
+}
+
+void Darboux::set(double phi0, const Vec3d& l, const Eigen::Matrix3d& Q, const Vec3d& b,
+                  double c) {
+  k[kPhi0] = phi0;
+  k[kLx] = l.x();
+  k[kLy] = l.y();
+  k[kLz] = l.z();
+  k[kQxx] = Q(0, 0);
+  k[kQyy] = Q(1, 1);
+  k[kQzz] = Q(2, 2);
+  k[kQxy] = Q(0, 1) + Q(1, 0);
+  k[kQxz] = Q(0, 2) + Q(2, 0);
+  k[kQyz] = Q(1, 2) + Q(2, 1);
+  k[kBx] = b.x();
+  k[kBy] = b.y();
+  k[kBz] = b.z();
+  k[kC] = c;
+}
+
+double Darboux::value(const Vec3d& X) const {
+  const double S = X.squaredNorm();
+  return (phi0() * S + l().dot(X)) * S + X.dot(Q() * X) + b().dot(X) + c();
+}
+
+// grad [phi0 S^2 + (l.X) S + X.QX + b.X + c]
+//   = 4 phi0 S X + S l + 2 (l.X) X + 2 Q X + b.
+Vec3d Darboux::gradient(const Vec3d& X) const {
+  const double S = X.squaredNorm();
+  return (4 * phi0() * S + 2 * l().dot(X)) * X + S * l() + 2 * (Q() * X) + b();
+}
+
+double Darboux::scale() const {
+  double m = 0;
+  for (double v : k) m = std::max(m, std::abs(v));
+  return m;
+}
+
+namespace {
+
+bool negligible(double size, double scale) { return size <= kDarbouxZeroTol * scale; }
+
+// A cubic (l.X)(X.X) + X.QX + b.X + c is reducible iff it is
+// (l.X + delta)(X.X + e.X + f): then Q = sym(l e^T) + delta I, so Q on the
+// plane orthogonal to l is delta times the identity, and e, f follow.
+bool parabolic_reducible(const Darboux& D) {
+  const Vec3d l = D.l();
+  const double L = l.norm();
+  const Vec3d lh = l / L;
+  const Vec3d w1 = lh.unitOrthogonal(), w2 = lh.cross(w1);
+  const Eigen::Matrix3d Q = D.Q();
+  const double q11 = w1.dot(Q * w1), q22 = w2.dot(Q * w2), q12 = w1.dot(Q * w2);
+  const double tol = 1e-10 * D.scale();
+  if (std::abs(q11 - q22) > tol || std::abs(q12) > tol) return false;
+  const double delta = 0.5 * (q11 + q22);
+  const Vec3d v = (Q - delta * Eigen::Matrix3d::Identity()) * lh;
+  const double e_l = v.dot(lh) / L;
+  const Vec3d e = 2 * v / L - e_l * lh;
+  // b = f l + delta e, c = delta f.
+  const Vec3d rest = D.b() - delta * e;
+  const double f = rest.dot(l) / (L * L);
+  return (rest - f * l).norm() <= tol && std::abs(D.c() - delta * f) <= tol;
+}
+
+// A quadric is a plane pair (reducible) iff its 4x4 matrix has rank <= 2.
+bool quadric_reducible(const Darboux& D) {
+  Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+  M.topLeftCorner<3, 3>() = D.Q();
+  M.block<3, 1>(0, 3) = 0.5 * D.b();
+  M.block<1, 3>(3, 0) = 0.5 * D.b().transpose();
+  M(3, 3) = D.c();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(M, Eigen::EigenvaluesOnly);
+  const Eigen::Vector4d ev = eig.eigenvalues();
+  const double big = ev.cwiseAbs().maxCoeff();
+  int rank = 0;
+  for (int i = 0; i < 4; ++i) rank += std::abs(ev[i]) > 1e-10 * big;
+  return rank <= 2;
+}
+
+}  // namespace
+
+DarbouxType darboux_type(const Darboux& D) {
+  const double s = D.scale();
+  if (!(s > 0)) return DarbouxType::zero;
+  const double q = std::max({std::abs(D.k[kQxx]), std::abs(D.k[kQyy]), std::abs(D.k[kQzz]),
+                             std::abs(D.k[kQxy]), std::abs(D.k[kQxz]), std::abs(D.k[kQyz])});
+  if (!negligible(std::abs(D.phi0()), s)) return DarbouxType::quartic;
+  if (!negligible(D.l().cwiseAbs().maxCoeff(), s))
+    return parabolic_reducible(D) ? DarbouxType::reducible : DarbouxType::parabolic;
+  if (!negligible(q, s)) return quadric_reducible(D) ? DarbouxType::reducible : DarbouxType::quadric;
+  if (!negligible(D.b().cwiseAbs().maxCoeff(), s)) return DarbouxType::plane;
+  return DarbouxType::constant;
+}
+
+// F(Y + m) with S_X = S_Y + 2 m.Y + |m|^2, expanded term by term.
+Darboux translate(const Darboux& D, const Vec3d& m) {
+  const double p0 = D.phi0(), mm = m.squaredNorm();
+  const Vec3d l = D.l(), b = D.b();
+  const Eigen::Matrix3d Q = D.Q(), I = Eigen::Matrix3d::Identity();
+  const double lm = l.dot(m);
+  const Vec3d l2 = l + 4 * p0 * m;
+  const Eigen::Matrix3d Q2 = Q + p0 * (2 * mm * I + 4 * m * m.transpose()) +
+                             (l * m.transpose() + m * l.transpose()) + lm * I;
+  const Vec3d b2 = b + 2 * (Q * m) + 4 * p0 * mm * m + mm * l + 2 * lm * m;
+  const double c2 = D.c() + p0 * mm * mm + lm * mm + m.dot(Q * m) + b.dot(m);
+  Darboux T;
+  T.set(p0, l2, Q2, b2, c2);
+  return T;
+}
+
+// ------------------------------------------------------------ inversion
+
+Status check_inversion(const Inversion& inv) {
+  if (!input_ok(inv.m) || !input_ok(inv.rho)) return Status::not_finite;
+  if (!(inv.rho > 0)) return Status::invalid_argument;
+  return Status::ok;
+}
+
+Status invert_point(const Inversion& inv, const Vec3d& X, Vec3d& out) {
+  if (Status st = check_inversion(inv); st != Status::ok) return st;
+  if (!input_ok(X)) return Status::not_finite;
+  const Vec3d Y = X - inv.m;
+  const double s = Y.squaredNorm();
+  if (!(s > 0)) return Status::at_inversion_center;
+  const Vec3d R = inv.m + (inv.rho * inv.rho / s) * Y;
+  if (!input_ok(R)) return Status::numerical_overflow;
+  out = R;
+  return Status::ok;
+}
+
+// In coordinates centered at m, (A, B, C) -> (C, k B, k^2 A), k = rho^2.
+Status invert_sphere(const Inversion& inv, const GeneralSphere& S, GeneralSphere& out) {
+  if (Status st = check_inversion(inv); st != Status::ok) return st;
+  if (!input_ok(S.A) || !input_ok(S.B) || !input_ok(S.C)) return Status::not_finite;
+  if (S.A == 0 && S.B.squaredNorm() == 0) return Status::invalid_argument;
+  const Vec3d m = inv.m;
+  const double k = inv.rho * inv.rho;
+  // Centered at m.
+  const double A = S.A;
+  const Vec3d B = S.B + 2 * S.A * m;
+  const double C = S.C + S.B.dot(m) + S.A * m.squaredNorm();
+  // Inverted, then back to X = Y + m.
+  const double A2 = C, C2y = k * k * A;
+  const Vec3d B2y = k * B;
+  GeneralSphere R;
+  R.A = A2;
+  R.B = B2y - 2 * A2 * m;
+  R.C = C2y - B2y.dot(m) + A2 * m.squaredNorm();
+  const double s = std::max({std::abs(R.A), R.B.cwiseAbs().maxCoeff(), std::abs(R.C)});
+  if (!std::isfinite(s)) return Status::numerical_overflow;
+  if (!(s > 0)) return Status::invalid_argument;
+  R.A /= s;
+  R.B /= s;
+  R.C /= s;
+  out = R;
+  return Status::ok;
+}
+
+namespace {
+
+// The circle through three points (is_line if they are collinear).
+CircleOrLine through(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  CircleOrLine r;
+  const Vec3d ab = b - a, ac = c - a, n = ab.cross(ac);
+  const double n2 = n.squaredNorm();
+  if (!(n2 > 1e-24 * ab.squaredNorm() * ac.squaredNorm())) {
+    r.is_line = true;
+    r.point = a;
+    r.axis = (ab.squaredNorm() >= ac.squaredNorm() ? ab : ac).normalized();
+    return r;
+  }
+  const Vec3d center =
+      a + (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2 * n2);
+  r.point = center;
+  r.axis = n / std::sqrt(n2);
+  r.radius = (center - a).norm();
+  return r;
+}
+
+Vec3d invert_raw(const Inversion& inv, const Vec3d& X) {
+  const Vec3d Y = X - inv.m;
+  return inv.m + (inv.rho * inv.rho / Y.squaredNorm()) * Y;
+}
+
+}  // namespace
+
+Status invert_circle(const Inversion& inv, const CircleOrLine& c, CircleOrLine& out) {
+  if (Status st = check_inversion(inv); st != Status::ok) return st;
+  if (!input_ok(c.point) || !input_ok(c.axis) || !input_ok(c.radius)) return Status::not_finite;
+  if (!(c.axis.squaredNorm() > 0)) return Status::invalid_argument;
+  const Vec3d ax = c.axis.normalized();
+  const Vec3d e1 = ax.unitOrthogonal(), e2 = ax.cross(e1);
+  CircleOrLine r;
+  if (c.is_line) {
+    // Through m: the line maps to itself. Otherwise a circle through m.
+    const Vec3d w = inv.m - c.point;
+    const double off = (w - w.dot(ax) * ax).norm();
+    if (off <= 1e-14 * (w.norm() + inv.rho)) {
+      r = c;
+      r.axis = ax;
+    } else {
+      const Vec3d foot = c.point + w.dot(ax) * ax;  // nearest to m
+      r = through(inv.m, invert_raw(inv, foot + off * ax), invert_raw(inv, foot - off * ax));
+    }
+  } else {
+    if (!(c.radius > 0)) return Status::invalid_argument;
+    // Three points of the circle away from m; if m is on the circle, two
+    // points give the image line.
+    const Vec3d w = inv.m - c.point;
+    const Vec3d in_plane = w - w.dot(ax) * ax;
+    const double on = std::abs(w.dot(ax)) + std::abs(in_plane.norm() - c.radius);
+    const double angle0 = in_plane.squaredNorm() > 0 ? std::atan2(in_plane.dot(e2), in_plane.dot(e1)) : 0.0;
+    Vec3d P[3];
+    for (int i = 0; i < 3; ++i) {
+      const double t = angle0 + 2.0943951023931957 * (i + 0.5);  // away from m's angle
+      P[i] = c.point + c.radius * (std::cos(t) * e1 + std::sin(t) * e2);
+    }
+    if (on <= 1e-14 * (c.radius + w.norm())) {
+      r.is_line = true;
+      const Vec3d a = invert_raw(inv, P[0]), b = invert_raw(inv, P[1]);
+      r.point = a;
+      r.axis = (b - a).normalized();
+    } else {
+      r = through(invert_raw(inv, P[0]), invert_raw(inv, P[1]), invert_raw(inv, P[2]));
+    }
+  }
+  if (!input_ok(r.point) || !input_ok(r.axis) || !std::isfinite(r.radius))
+    return Status::numerical_overflow;
+  out = r;
+  return Status::ok;
+}
+
+Status invert_darboux(const Inversion& inv, const Darboux& D, Darboux& out) {
+  if (Status st = check_inversion(inv); st != Status::ok) return st;
+  for (double v : D.k)
+    if (!input_ok(v)) return Status::not_finite;
+  if (!(D.scale() > 0)) return Status::invalid_argument;
+  const double k = inv.rho * inv.rho;
+  const Darboux G = translate(D, inv.m);  // centered at m
+  Darboux H;
+  H.set(G.c(), k * G.b(), k * k * G.Q(), k * k * k * G.l(), k * k * k * k * G.phi0());
+  Darboux R = translate(H, -inv.m);
+  const double s = R.scale();
+  if (!std::isfinite(s)) return Status::numerical_overflow;
+  if (!(s > 0)) return Status::invalid_argument;
+  for (double& v : R.k) v /= s;
+  out = R;
+  return Status::ok;
+}
+
+Status invert_surface_point(const Inversion& inv, const SurfacePoint& p, bool du, bool dv,
+                            bool normal, SurfacePoint& out) {
+  if (Status st = check_inversion(inv); st != Status::ok) return st;
+  const Vec3d Y = p.x - inv.m;
+  const double s = Y.squaredNorm();
+  if (!(s > 0)) return Status::at_inversion_center;
+  const double k = inv.rho * inv.rho / s;
+  const Vec3d Yh = Y / std::sqrt(s);
+  auto reflect = [&](const Vec3d& v) { return v - 2 * Yh.dot(v) * Yh; };
+  SurfacePoint r;
+  r.x = inv.m + k * Y;
+  if (du) r.du = k * reflect(p.du);
+  if (dv) r.dv = k * reflect(p.dv);
+  if (normal) r.normal = reflect(p.normal);
+  bool finite = input_ok(r.x);
+  if (du) finite &= input_ok(r.du);
+  if (dv) finite &= input_ok(r.dv);
+  if (normal) finite &= input_ok(r.normal);
+  if (!finite) return Status::numerical_overflow;
+  out = r;
+  return Status::ok;
+}
+
+// ------------------------------------------------------------ DCMC
+
+Darboux DcmcFamily::member(double alpha) const {
+  Darboux D = base;
+  for (int i = 0; i < kDarbouxCoeffs; ++i) D.k[i] += alpha * quadric.k[i];
+  return D;
+}
+
+namespace {
+
+// Coefficients (t^0, t^1, t^2) of each phi2 monomial along P + t d, in the
+// order qxx, qyy, qzz, qxy, qxz, qyz, bx, by, bz, c.
+void monomials_along(const Line& L, double (&rows)[3][10]) {
+  const Vec3d& P = L.P;
+  const Vec3d& d = L.d;
+  const int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  for (int m = 0; m < 6; ++m) {
+    const int i = pairs[m][0], j = pairs[m][1];
+    rows[0][m] = P[i] * P[j];
+    rows[1][m] = P[i] * d[j] + P[j] * d[i];
+    rows[2][m] = d[i] * d[j];
+  }
+  for (int i = 0; i < 3; ++i) {
+    rows[0][6 + i] = P[i];
+    rows[1][6 + i] = d[i];
+    rows[2][6 + i] = 0;
+  }
+  rows[0][9] = 1;
+  rows[1][9] = rows[2][9] = 0;
+}
+
+}  // namespace
+
+Status dcmc(const Line (&lines)[3], DcmcFamily& out) {
+  Line L[3];
+  for (int i = 0; i < 3; ++i) {
+    if (!input_ok(lines[i].P) || !input_ok(lines[i].d)) return Status::not_finite;
+    if (!(lines[i].d.squaredNorm() > 0)) return Status::invalid_argument;
+    L[i].d = lines[i].d.normalized();
+    L[i].P = lines[i].P - lines[i].P.dot(L[i].d) * L[i].d;  // nearest to the origin
+  }
+  // Mutually non-parallel, with a common normal n (step 2: phi1 = n . X).
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (L[i].d.cross(L[j].d).norm() <= 1e-10) return Status::parallel_lines;
+  const Vec3d n = L[0].d.cross(L[1].d).normalized();
+  if (std::abs(n.dot(L[2].d)) > 1e-10) return Status::no_common_normal;
+  // Step 3: l_i in D for phi0 = 0, phi1 = n.X: along P + t d (n.d = 0),
+  //   (n.P)(|P|^2 + 2 t P.d + t^2) + phi2(P + t d) = 0 for all t.
+  Eigen::Matrix<double, 9, 10> A;
+  Eigen::Matrix<double, 9, 1> r;
+  for (int i = 0; i < 3; ++i) {
+    double rows[3][10];
+    monomials_along(L[i], rows);
+    const double h = n.dot(L[i].P);
+    const double rhs[3] = {-h * L[i].P.squaredNorm(), -2 * h * L[i].P.dot(L[i].d), -h};
+    for (int e = 0; e < 3; ++e) {
+      for (int m = 0; m < 10; ++m) A(3 * i + e, m) = rows[e][m];
+      r(3 * i + e) = rhs[e];
+    }
+  }
+  // Step 4, rank-revealing: one null direction expected (ERRATA: a quadric
+  // through the lines); more means the lines do not fix the family.
+  const Eigen::JacobiSVD<Eigen::Matrix<double, 9, 10>> svd(A, Eigen::ComputeFullU |
+                                                                  Eigen::ComputeFullV);
+  const auto& sv = svd.singularValues();
+  int rank = 0;
+  for (int i = 0; i < sv.size(); ++i) rank += sv[i] > 1e-10 * sv[0];
+  if (rank < 9) return Status::rank_deficient;
+  const Eigen::Matrix<double, 10, 1> x = svd.solve(r);  // minimum norm: orthogonal to the null space
+  const Eigen::Matrix<double, 10, 1> h = svd.matrixV().col(9);
+  if (!((A * x - r).norm() <= 1e-9 * (1 + r.norm()))) return Status::rank_deficient;
+  auto fill = [&](Darboux& D, const Eigen::Matrix<double, 10, 1>& v, const Vec3d& l) {
+    D = Darboux{};
+    D.k[kLx] = l.x();
+    D.k[kLy] = l.y();
+    D.k[kLz] = l.z();
+    for (int m = 0; m < 10; ++m) D.k[kQxx + m] = v[m];
+  };
+  DcmcFamily F;
+  F.n = n;
+  fill(F.base, x, n);
+  fill(F.quadric, h, Vec3d::Zero());
+  for (double v : F.base.k)
+    if (!std::isfinite(v)) return Status::numerical_overflow;
+  out = F;
+  return Status::ok;
+}
+
+}  // namespace v0
+}  // namespace cyclide

@@ -1,0 +1,222 @@
+// Seed 000 §5–7: Darboux cyclides (31), Mobius inversion, and DCMC,
+// on the paper's worked examples (Example 4, Example 2 continued).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cyclide/darboux.hpp"
+
+namespace cyclide {
+namespace {
+
+// Example 4, eq. (35): C = z (x^2+y^2+z^2) - y^2 - 3 z^2 - 3 x y + 2 z
+//                          + alpha (x z - 2 y z + 2 y).
+Darboux example4(double alpha) {
+  Darboux D;
+  D.k[kLz] = 1;
+  D.k[kQyy] = -1;
+  D.k[kQzz] = -3;
+  D.k[kQxy] = -3;
+  D.k[kBz] = 2;
+  D.k[kQxz] = alpha;
+  D.k[kQyz] = -2 * alpha;
+  D.k[kBy] = 2 * alpha;
+  return D;
+}
+
+// Example 2 continued, eq. (39): 4 z (x^2+y^2+z^2) - 8 y^2 - 3 z^2 - 6 x y - z.
+Darboux example2() {
+  Darboux D;
+  D.k[kLz] = 4;
+  D.k[kQyy] = -8;
+  D.k[kQzz] = -3;
+  D.k[kQxy] = -6;
+  D.k[kBz] = -1;
+  return D;
+}
+
+// Is D (up to a factor fixing phi1 = n.X) a member of the DCMC family?
+// Returns the residual of D - base after removing the quadric direction,
+// relative to |D|.
+double membership_residual(const DcmcFamily& F, Darboux D) {
+  // Scale D so that its phi1 equals F's (both are multiples of n.X).
+  const double s = F.n.dot(D.l());
+  for (double& v : D.k) v /= s;
+  double dq = 0, qq = 0;
+  for (int i = 0; i < kDarbouxCoeffs; ++i) {
+    dq += (D.k[i] - F.base.k[i]) * F.quadric.k[i];
+    qq += F.quadric.k[i] * F.quadric.k[i];
+  }
+  const Darboux M = F.member(dq / qq);
+  double r = 0;
+  for (int i = 0; i < kDarbouxCoeffs; ++i) r = std::max(r, std::abs(M.k[i] - D.k[i]));
+  return r / D.scale();
+}
+
+TEST(Darboux, Example4DcmcFamilyContainsEq35ForEveryAlpha) {
+  // Eq. (34): l1 = (u,0,0), l2 = (0,u,1), l3 = (u,u,2); n = (0,0,1).
+  const Line lines[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  DcmcFamily F;
+  ASSERT_EQ(dcmc(lines, F), Status::ok);
+  EXPECT_NEAR(std::abs(F.n.z()), 1.0, 1e-15);
+  EXPECT_EQ(darboux_type(F.base), DarbouxType::parabolic);
+  // The quadric direction is x z - 2 y z + 2 y (ERRATA: alpha is not canonical).
+  for (double alpha : {0.0, 1.0, -3.0, 2.5}) EXPECT_LE(membership_residual(F, example4(alpha)), 1e-12);
+  // A cubic with a different quadratic part is not a member.
+  Darboux other = example4(0);
+  other.k[kQxx] = 1;
+  EXPECT_GT(membership_residual(F, other), 1e-3);
+}
+
+TEST(Darboux, Example4SectionsFactorAsEqs36To38) {
+  for (double alpha : {0.0, 0.7, -2.0})
+    for (double x : {-1.3, 0.0, 0.4, 2.0})
+      for (double y : {-0.6, 0.25, 1.5}) {
+        const Darboux C = example4(alpha);
+        EXPECT_NEAR(C.value({x, y, 0}), -y * (3 * x + y - 2 * alpha), 1e-12);       // (36)
+        EXPECT_NEAR(C.value({x, y, 1}), x * (x - 3 * y + alpha), 1e-12);            // (37)
+        EXPECT_NEAR(C.value({x, y, 2}), (x - y) * (2 * x - y + 2 * alpha), 1e-12);  // (38)
+      }
+}
+
+TEST(Darboux, Example4SixLinesLieOnEveryMember) {
+  const Line lines[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  DcmcFamily F;
+  ASSERT_EQ(dcmc(lines, F), Status::ok);
+  for (double alpha : {0.0, 1.5}) {
+    const Darboux C = example4(alpha);
+    // The given lines and the additional ones from (36)-(38).
+    const Line six[6] = {lines[0], lines[1], lines[2],
+                         {{0, 2 * alpha, 0}, {1, -3, 0}},
+                         {{-alpha, 0, 1}, {3, 1, 0}},
+                         {{0, 2 * alpha, 2}, {1, 2, 0}}};
+    for (const Line& L : six)
+      for (double t : {-2.0, 0.3, 5.0}) EXPECT_NEAR(C.value(L.P + t * L.d), 0.0, 1e-11);
+  }
+  // Every member of the computed family contains the three given lines.
+  for (double beta : {-10.0, 0.0, 3.0})
+    for (const Line& L : lines)
+      for (double t : {-2.0, 0.3, 5.0}) EXPECT_NEAR(F.member(beta).value(L.P + t * L.d), 0.0, 1e-11);
+}
+
+TEST(Darboux, Example2ContinuedLinesLieOnEq39) {
+  const Darboux C = example2();
+  EXPECT_EQ(darboux_type(C), DarbouxType::parabolic);
+  // l1, l2 (21), l3 (41) with lambda = 5/4 (42), and the lines (43).
+  const Line lines[5] = {{{0, 0, 0}, {1, 0, 0}},
+                         {{0, 0, 1}, {2, 1, 0}},
+                         {{0, 0, -0.25}, {0.75, -0.25, 0}},
+                         {{0, 0, 0}, {1, -0.75, 0}},
+                         {{0, 0, 1}, {1, -2, 0}}};
+  for (const Line& L : lines)
+    for (double t : {-3.0, 0.5, 2.0}) EXPECT_NEAR(C.value(L.P + t * L.d), 0.0, 1e-12);
+  // (41)-(42): l3 = lambda l1 + (1 - lambda) l2 with lambda = w.w / (w.w - 1).
+  const Vec3d w(2, 1, 0);
+  const double lambda = w.squaredNorm() / (w.squaredNorm() - 1);
+  EXPECT_DOUBLE_EQ(lambda, 1.25);
+  for (double u : {-1.0, 2.0}) {
+    const Vec3d l3 = lambda * Vec3d(u, 0, 0) + (1 - lambda) * Vec3d(2 * u, u, 1);
+    EXPECT_LE((l3 - 0.25 * Vec3d(3 * u, -u, -1)).norm(), 1e-15);
+  }
+  // §7: DCMC on l1, l2, l3 gives a family containing the PRCS surface (39).
+  const Line three[3] = {lines[0], lines[1], lines[2]};
+  DcmcFamily F;
+  ASSERT_EQ(dcmc(three, F), Status::ok);
+  EXPECT_LE(membership_residual(F, C), 1e-12);
+}
+
+TEST(Darboux, TypesIncludingReducibleCases) {
+  Darboux sphere;  // x^2 + y^2 + z^2 - 1
+  sphere.k[kQxx] = sphere.k[kQyy] = sphere.k[kQzz] = 1;
+  sphere.k[kC] = -1;
+  EXPECT_EQ(darboux_type(sphere), DarbouxType::quadric);
+  Darboux pair;  // x y = 0
+  pair.k[kQxy] = 1;
+  EXPECT_EQ(darboux_type(pair), DarbouxType::reducible);
+  Darboux plane_sphere;  // (z + 2)(X.X + x - 1) = z X.X + z x - z + 2 X.X + 2 x - 2
+  plane_sphere.k[kLz] = 1;
+  plane_sphere.k[kQxz] = 1;
+  plane_sphere.k[kBz] = -1;
+  plane_sphere.k[kQxx] = plane_sphere.k[kQyy] = plane_sphere.k[kQzz] = 2;
+  plane_sphere.k[kBx] = 2;
+  plane_sphere.k[kC] = -2;
+  EXPECT_EQ(darboux_type(plane_sphere), DarbouxType::reducible);
+  EXPECT_EQ(darboux_type(example2()), DarbouxType::parabolic);
+  Darboux torus_like = example2();
+  torus_like.k[kPhi0] = 1;
+  EXPECT_EQ(darboux_type(torus_like), DarbouxType::quartic);
+  Darboux plane;
+  plane.k[kBx] = 1;
+  EXPECT_EQ(darboux_type(plane), DarbouxType::plane);
+  EXPECT_EQ(darboux_type(Darboux{}), DarbouxType::zero);
+}
+
+TEST(Darboux, GradientIsTheDerivativeOfTheValue) {
+  Darboux D = example4(0.7);
+  D.k[kPhi0] = 0.3;
+  const Vec3d X(0.4, -1.1, 0.8);
+  const double h = 1e-6;
+  const Vec3d g = D.gradient(X);
+  for (int i = 0; i < 3; ++i) {
+    Vec3d e = Vec3d::Zero();
+    e[i] = h;
+    EXPECT_NEAR((D.value(X + e) - D.value(X - e)) / (2 * h), g[i], 1e-7);
+  }
+}
+
+// §5: "If the center of the inversion sphere is located on the Darboux
+// cyclide, then the equation of its image satisfies phi0 = 0."
+TEST(Darboux, InversionAtAPointOfTheCyclideGivesAParabolicOne) {
+  const Darboux C = example2();  // contains l1 = (u, 0, 0)
+  Inversion on{{0.7, 0, 0}, 1.3}, off{{0.3, 0.9, -0.4}, 1.3};
+  Darboux R;
+  ASSERT_EQ(invert_darboux(on, C, R), Status::ok);
+  EXPECT_LE(std::abs(R.phi0()), 1e-14);
+  // A center off the surface gives a quartic; inverting back gives C again.
+  ASSERT_EQ(invert_darboux(off, C, R), Status::ok);
+  EXPECT_EQ(darboux_type(R), DarbouxType::quartic);
+  Darboux back;
+  ASSERT_EQ(invert_darboux(off, R, back), Status::ok);
+  const double s = C.scale() / back.scale() * (back.k[kLz] > 0 ? 1 : -1);
+  for (int i = 0; i < kDarbouxCoeffs; ++i) EXPECT_NEAR(back.k[i] * s, C.k[i], 1e-11);
+}
+
+TEST(Darboux, InversionOfPointsSpheresAndCircles) {
+  const Inversion inv{{1, 2, 3}, 2};
+  Vec3d X;
+  EXPECT_EQ(invert_point(inv, {1, 2, 3}, X), Status::at_inversion_center);
+  EXPECT_EQ(invert_point({{0, 0, 0}, 0.0}, {1, 0, 0}, X), Status::invalid_argument);
+  ASSERT_EQ(invert_point(inv, {1, 2, 4}, X), Status::ok);
+  EXPECT_LE((X - Vec3d(1, 2, 7)).norm(), 1e-15);  // distance 1 -> rho^2 = 4
+  // The sphere through m of radius 1 centered at m + (1,0,0) maps to the
+  // plane x = m.x + rho^2 / 2.
+  GeneralSphere S{1, -2 * Vec3d(2, 2, 3), Vec3d(2, 2, 3).squaredNorm() - 1}, P;
+  ASSERT_EQ(invert_sphere(inv, S, P), Status::ok);
+  EXPECT_LE(std::abs(P.A), 1e-15);
+  EXPECT_NEAR(-P.C / P.B.x(), 1 + 2, 1e-14);
+  EXPECT_LE(std::abs(P.B.y()) + std::abs(P.B.z()), 1e-15);
+  // A circle through m maps to a line; the line maps back to that circle.
+  CircleOrLine c{false, {2, 2, 3}, {0, 0, 1}, 1.0}, l, back;
+  ASSERT_EQ(invert_circle(inv, c, l), Status::ok);
+  EXPECT_TRUE(l.is_line);
+  ASSERT_EQ(invert_circle(inv, l, back), Status::ok);
+  EXPECT_FALSE(back.is_line);
+  EXPECT_LE((back.point - c.point).norm(), 1e-12);
+  EXPECT_NEAR(back.radius, 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(back.axis.z()), 1.0, 1e-12);
+}
+
+TEST(Darboux, DcmcReportsDegenerateInput) {
+  DcmcFamily F;
+  const Line parallel[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {2, 0, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  EXPECT_EQ(dcmc(parallel, F), Status::parallel_lines);
+  const Line skew[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {0, 1, 1}}};
+  EXPECT_EQ(dcmc(skew, F), Status::no_common_normal);
+  const Line bad[3] = {{{0, 0, 0}, {0, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  EXPECT_EQ(dcmc(bad, F), Status::invalid_argument);
+  const Line nan[3] = {{{NAN, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}}, {{0, 0, 2}, {1, 1, 0}}};
+  EXPECT_EQ(dcmc(nan, F), Status::not_finite);
+}
+
+}  // namespace
+}  // namespace cyclide
