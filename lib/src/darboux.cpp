@@ -136,13 +136,19 @@ Status check_inversion(const Inversion& inv) {
   return Status::ok;
 }
 
+namespace {
+// X' without checks (X != m).
+Vec3d invert_raw(const Inversion& inv, const Vec3d& X) {
+  const Vec3d Y = X - inv.m;
+  return inv.m + (inv.rho * inv.rho / Y.squaredNorm()) * Y;
+}
+}  // namespace
+
 Status invert_point(const Inversion& inv, const Vec3d& X, Vec3d& out) {
   if (Status st = check_inversion(inv); st != Status::ok) return st;
   if (!input_ok(X)) return Status::not_finite;
-  const Vec3d Y = X - inv.m;
-  const double s = Y.squaredNorm();
-  if (!(s > 0)) return Status::at_inversion_center;
-  const Vec3d R = inv.m + (inv.rho * inv.rho / s) * Y;
+  if (!((X - inv.m).squaredNorm() > 0)) return Status::at_inversion_center;
+  const Vec3d R = invert_raw(inv, X);
   if (!input_ok(R)) return Status::numerical_overflow;
   out = R;
   return Status::ok;
@@ -195,11 +201,6 @@ CircleOrLine through(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
   r.axis = n / std::sqrt(n2);
   r.radius = (center - a).norm();
   return r;
-}
-
-Vec3d invert_raw(const Inversion& inv, const Vec3d& X) {
-  const Vec3d Y = X - inv.m;
-  return inv.m + (inv.rho * inv.rho / Y.squaredNorm()) * Y;
 }
 
 }  // namespace
