@@ -124,6 +124,11 @@ inline const char* explain(Status s) {
       return "the linear system has more free parameters than expected (degenerate input)";
     case Status::at_inversion_center:
       return "the point is the inversion center: its image is at infinity";
+    case Status::not_parabolic:
+      return "the cyclide is not an irreducible parabolic (cubic) Darboux cyclide";
+    case Status::empty_real_locus: return "the requested real circle or surface is empty";
+    case Status::too_few_lines:
+      return "the cyclide lacks the lines Props. 3/5 need (a double line, three skew lines)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -27,6 +27,9 @@ CYC_SAME(CYC_E_PARALLEL_LINES, parallel_lines);
 CYC_SAME(CYC_E_NO_COMMON_NORMAL, no_common_normal);
 CYC_SAME(CYC_E_RANK_DEFICIENT, rank_deficient);
 CYC_SAME(CYC_E_AT_INVERSION_CENTER, at_inversion_center);
+CYC_SAME(CYC_E_NOT_PARABOLIC, not_parabolic);
+CYC_SAME(CYC_E_EMPTY_REAL_LOCUS, empty_real_locus);
+CYC_SAME(CYC_E_TOO_FEW_LINES, too_few_lines);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
@@ -53,7 +56,8 @@ const char* cyc_status_name(int status) {
     case CYC_E_DEGENERATE_CIRCLE_PARAMETER: case CYC_E_NOT_CANAL:
     case CYC_E_SINGULAR_POINT: case CYC_E_DEGENERATE_RINGED:
     case CYC_E_PARALLEL_LINES: case CYC_E_NO_COMMON_NORMAL: case CYC_E_RANK_DEFICIENT:
-    case CYC_E_AT_INVERSION_CENTER:
+    case CYC_E_AT_INVERSION_CENTER: case CYC_E_NOT_PARABOLIC: case CYC_E_EMPTY_REAL_LOCUS:
+    case CYC_E_TOO_FEW_LINES:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));

@@ -25,6 +25,9 @@ enum class Status : int {
   no_common_normal = 108,   // DCMC: the line directions do not share a normal
   rank_deficient = 109,     // a linear system has more freedom than expected
   at_inversion_center = 110,  // a point at the inversion center (image at infinity)
+  not_parabolic = 111,      // a query for parabolic (cubic, irreducible) cyclides only
+  empty_real_locus = 112,   // the requested real object (circle, surface) is empty
+  too_few_lines = 113,      // Props. 3, 5: the cyclide lacks the lines they need
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

@@ -496,6 +496,9 @@ const char* status_name(Status s) noexcept {
     case Status::no_common_normal: return "CYC_E_NO_COMMON_NORMAL";
     case Status::rank_deficient: return "CYC_E_RANK_DEFICIENT";
     case Status::at_inversion_center: return "CYC_E_AT_INVERSION_CENTER";
+    case Status::not_parabolic: return "CYC_E_NOT_PARABOLIC";
+    case Status::empty_real_locus: return "CYC_E_EMPTY_REAL_LOCUS";
+    case Status::too_few_lines: return "CYC_E_TOO_FEW_LINES";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -25,6 +25,9 @@ enum cyc_status {
   CYC_E_NO_COMMON_NORMAL = 108,  /* DCMC: line directions share no normal */
   CYC_E_RANK_DEFICIENT = 109,    /* a system has more freedom than expected */
   CYC_E_AT_INVERSION_CENTER = 110, /* a point at the inversion center */
+  CYC_E_NOT_PARABOLIC = 111,       /* needs an irreducible parabolic (cubic) cyclide */
+  CYC_E_EMPTY_REAL_LOCUS = 112,    /* the requested real circle/surface is empty */
+  CYC_E_TOO_FEW_LINES = 113,       /* Props. 3/5: the cyclide lacks the needed lines */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 
