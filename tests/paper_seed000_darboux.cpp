@@ -206,6 +206,28 @@ TEST(Darboux, InversionOfPointsSpheresAndCircles) {
   EXPECT_NEAR(std::abs(back.axis.z()), 1.0, 1e-12);
 }
 
+// Regression (fuzz_darboux, fuzz/corpus/fuzz_darboux/regress-circle-image-*):
+// when the image of a circle or line collapses below the resolution of
+// doubles (a circle near 1e100 inverted in a small sphere, or rho^2
+// underflowing to 0), the three image points coincide; invert_circle
+// returned ok with a "line" of axis (0, 0, 0). Now numerical_overflow.
+TEST(Darboux, InvertCircleCollapsedImageIsNumericalOverflow) {
+  CircleOrLine out;
+  const Inversion small{{0.1, -8, -8.9032}, 1.0 / 64};
+  const CircleOrLine far{false, {0x1.249ad2594c37dp+332, -9.375, -1.57}, {0, 1, 0}, 0.23};
+  EXPECT_EQ(invert_circle(small, far, out), Status::numerical_overflow);
+  const Inversion underflow{{0.0082, -5.4, -36.4}, 0x1.4395b31c8decfp-1017};
+  const CircleOrLine line{true, {7.8, 8, 9.9}, {1, 0, 0}, 0};
+  EXPECT_EQ(invert_circle(underflow, line, out), Status::numerical_overflow);
+  // Still fine: the same circle and line at a resolvable scale.
+  const CircleOrLine near{false, {3, -9.375, -1.57}, {0, 1, 0}, 0.23};
+  ASSERT_EQ(invert_circle(small, near, out), Status::ok);
+  EXPECT_NEAR(out.axis.norm(), 1.0, 1e-12);
+  ASSERT_EQ(invert_circle(Inversion{{0.0082, -5.4, -36.4}, 0.5}, line, out), Status::ok);
+  EXPECT_FALSE(out.is_line);
+  EXPECT_NEAR(out.axis.norm(), 1.0, 1e-12);
+}
+
 TEST(Darboux, DcmcReportsDegenerateInput) {
   DcmcFamily F;
   const Line parallel[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {2, 0, 0}}, {{0, 0, 2}, {1, 1, 0}}};
