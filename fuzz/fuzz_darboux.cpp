@@ -397,8 +397,11 @@ void op_invert_sphere(Input& in, Ctx& c) {
                               nulls == 3 ? nullptr : &r[i]);
     c.check("cyc_invert_sphere", st[i]);
   }
-  FZ_LOG("invert_sphere (%a; %a %a %a; %a) -> %s", S.a, S.b[0], S.b[1], S.b[2], S.c,
+  FZ_LOG("invert_sphere m = (%a %a %a) rho = %a; (%a; %a %a %a; %a) -> %s", inv.center[0],
+         inv.center[1], inv.center[2], inv.radius, S.a, S.b[0], S.b[1], S.b[2], S.c,
          cyc_status_name(st[0]));
+  if (st[0] == CYC_OK)
+    FZ_LOG("    -> (%a; %a %a %a; %a)", r[0].a, r[0].b[0], r[0].b[1], r[0].b[2], r[0].c);
   FZ_CHECK(st[0] == st[1] && same_bits(&r[0], &r[1], sizeof r[0]),
            "cyc_invert_sphere not deterministic");
   if (nulls) FZ_CHECK(st[0] == CYC_E_NULL_ARGUMENT, "invert_sphere(NULL): %s",
@@ -625,8 +628,8 @@ void op_darboux_eval(Input& in, Ctx& c) {
   }
   // The value against the sum of its terms computed here.
   const double v = value(D.k, X), terms = abs_value(D.k, X);
-  if (std::isfinite(terms))
-    FZ_CHECK(std::abs(r[0].v[0] - v) <= 64 * kEps * terms,
+  if (std::isfinite(terms))  // (1e-300: subnormal terms round absolutely)
+    FZ_CHECK(std::abs(r[0].v[0] - v) <= 64 * kEps * terms + 1e-300,
              "darboux_eval value %.17g, expected %.17g (terms %g)", r[0].v[0], v, terms);
 }
 
@@ -683,7 +686,12 @@ void op_invert_darboux(Input& in, Ctx& c) {
                                nulls == 3 ? nullptr : &r[i]);
     c.check("cyc_invert_darboux", st[i]);
   }
-  FZ_LOG("invert_darboux -> %s", cyc_status_name(st[0]));
+  if (fz::verbose()) {
+    FZ_LOG("invert_darboux m = (%a %a %a) rho = %a -> %s", inv.center[0], inv.center[1],
+           inv.center[2], inv.radius, cyc_status_name(st[0]));
+    for (int i = 0; i < 14; ++i)
+      FZ_LOG("    k[%d] = %a -> %a", i, D.k[i], st[0] == CYC_OK ? r[0].k[i] : 0.0);
+  }
   FZ_CHECK(st[0] == st[1] && same_bits(&r[0], &r[1], sizeof r[0]),
            "cyc_invert_darboux not deterministic");
   if (nulls) FZ_CHECK(st[0] == CYC_E_NULL_ARGUMENT, "invert_darboux(NULL): %s",

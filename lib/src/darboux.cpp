@@ -173,8 +173,11 @@ Status invert_sphere(const Inversion& inv, const GeneralSphere& S, GeneralSphere
   R.A = A2;
   R.B = B2y - 2 * A2 * m;
   R.C = C2y - B2y.dot(m) + A2 * m.squaredNorm();
+  // Every coefficient finite (std::max skips a NaN, e.g. inf - inf in R.C:
+  // fuzz_darboux found NaN returned with ok).
+  if (!std::isfinite(R.A) || !R.B.allFinite() || !std::isfinite(R.C))
+    return Status::numerical_overflow;
   const double s = std::max({std::abs(R.A), R.B.cwiseAbs().maxCoeff(), std::abs(R.C)});
-  if (!std::isfinite(s)) return Status::numerical_overflow;
   if (!(s > 0)) return Status::invalid_argument;
   R.A /= s;
   R.B /= s;
@@ -279,8 +282,11 @@ Status invert_darboux(const Inversion& inv, const Darboux& D, Darboux& out) {
   Darboux H;
   H.set(G.c(), k * G.b(), k * k * G.Q(), k * k * k * G.l(), k * k * k * k * G.phi0());
   Darboux R = translate(H, -inv.m);
+  // Every coefficient finite (scale() skips a NaN, e.g. inf - inf or 0 inf:
+  // fuzz_darboux found NaN returned with ok).
+  for (double v : R.k)
+    if (!std::isfinite(v)) return Status::numerical_overflow;
   const double s = R.scale();
-  if (!std::isfinite(s)) return Status::numerical_overflow;
   if (!(s > 0)) return Status::invalid_argument;
   for (double& v : R.k) v /= s;
   out = R;
