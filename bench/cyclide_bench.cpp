@@ -1,8 +1,12 @@
-// Google Benchmark suite for cyclide, through the public C API only.
+// Google Benchmark suite for cyclide, through the public C API (and, where
+// named, the C++ core for comparison).
 //
 //  * creation of a PRCS surface (two cubics) and a PRRS surface (three cubics)
 //  * single-point evaluation: point only, and point + x_u + x_v + normal
 //  * grid evaluation 1000 x 1000 into preallocated caller buffers
+//  * Darboux cyclides (SPEC §8b): DCMC on Example 4 (core and C API),
+//    cyc_invert_darboux, value + gradient (C API and core), and
+//    cyc_surface_eval_inverted per point (compare with BM_Eval)
 //
 // Every benchmark reports "allocs_per_iter": heap allocations (malloc family
 // and operator new, counted by alloc_hook.cpp) per iteration of its timed
@@ -12,11 +16,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "cyclide/cyclide.h"
+#include "cyclide/darboux.hpp"  // the core, for BM_DcmcCore and the core value
 
 std::uint64_t cyc_bench_alloc_count();  // alloc_hook.cpp
 bool cyc_bench_alloc_hooked();          // false: allocations are not counted
@@ -336,5 +342,185 @@ BENCHMARK_CAPTURE(BM_Grid, prrs_points_normals, Kind::prrs, kPointsNormals)
     ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Grid, prrs_all, Kind::prrs, kAll)
     ->Args({1000, 1000})->Args({100, 100})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// ------------------------------------------------------------ Darboux (SPEC §8b)
+
+// Example 4 of seed 000, eq. (34): (u, 0, 0), (0, u, 1), (u, u, 2).
+constexpr cyc_line kEx4Lines[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}},
+                                   {{0, 0, 2}, {1, 1, 0}}};
+// Eq. (35) with alpha = 1: z (x^2+y^2+z^2) - y^2 - 3z^2 - 3xy + (xz - 2yz + 2y) + 2z.
+constexpr cyc_darboux kEx4Member = {{0, 0, 0, 1, 0, -1, -3, -3, 1, -2, 0, 2, 2, 0}};
+constexpr cyc_inversion kInversion = {{0.5, -1.0, 3.0}, 2.0};
+
+// DCMC through the core: one fixed-size 9x10 JacobiSVD per iteration.
+void BM_DcmcCore(benchmark::State& state) {
+  using namespace cyclide;
+  Line L[3];
+  for (int i = 0; i < 3; ++i)
+    L[i] = {Vec3d(kEx4Lines[i].point[0], kEx4Lines[i].point[1], kEx4Lines[i].point[2]),
+            Vec3d(kEx4Lines[i].direction[0], kEx4Lines[i].direction[1],
+                  kEx4Lines[i].direction[2])};
+  Status bad = Status::ok;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(L);
+    DcmcFamily F;
+    const Status st = dcmc(L, F);
+    if (st != Status::ok) bad = st;
+    benchmark::DoNotOptimize(F);
+  }
+  allocs.finish();
+  if (bad != Status::ok) {
+    state.SkipWithError("dcmc (core) failed on Example 4");
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// DCMC through the C API (argument checks, the guard, copying out).
+void BM_DcmcCapi(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  cyc_line L[3] = {kEx4Lines[0], kEx4Lines[1], kEx4Lines[2]};
+  double n[3];
+  cyc_darboux base, quadric;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(L);
+    const int st = cyc_dcmc(f.ctx, L, n, &base, &quadric);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(base);
+    benchmark::DoNotOptimize(quadric);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_dcmc", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// The closed-form image of a cyclide's coefficients (cyc_invert_darboux).
+void BM_InvertDarboux(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  cyc_darboux D = kEx4Member, out;
+  cyc_inversion inv = kInversion;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(D);
+    benchmark::DoNotOptimize(inv);
+    const int st = cyc_invert_darboux(f.ctx, &inv, &D, &out);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_invert_darboux", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// Points of random (u, v) for the Darboux value benchmarks: the surface's
+// points, so that they are of the size the surfaces produce.
+struct Points {
+  double x[kPairs][3];
+};
+const Points& surface_points() {
+  static const Points p = [] {
+    Points r{};
+    const Fixture& f = fixture();
+    const Pairs& P = random_pairs();
+    for (std::size_t i = 0; i < kPairs; ++i)
+      if (!f.prcs || cyc_surface_eval(f.ctx, f.prcs, P.uv[i][0], P.uv[i][1], r.x[i], nullptr,
+                                      nullptr, nullptr) != CYC_OK)
+        r.x[i][0] = r.x[i][1] = r.x[i][2] = double(i % 7) - 3.0;
+    return r;
+  }();
+  return p;
+}
+
+// F(X) and grad F(X) of a Darboux cyclide: the C API, or the core.
+void BM_DarbouxValueGradient(benchmark::State& state, bool capi) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const Points& X = surface_points();
+  cyclide::Darboux core;
+  std::memcpy(core.k, kEx4Member.k, sizeof core.k);
+  const cyc_darboux D = kEx4Member;
+  std::size_t i = 0;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    const double* x = X.x[i++ & (kPairs - 1)];
+    double value, gradient[3];
+    if (capi) {
+      const int st = cyc_darboux_eval(f.ctx, &D, x, &value, gradient);
+      if (st != CYC_OK && bad == CYC_OK) bad = st;
+    } else {
+      const cyclide::Vec3d p(x[0], x[1], x[2]);
+      value = core.value(p);
+      const cyclide::Vec3d g = core.gradient(p);
+      gradient[0] = g.x();
+      gradient[1] = g.y();
+      gradient[2] = g.z();
+    }
+    benchmark::DoNotOptimize(value);
+    benchmark::DoNotOptimize(gradient);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_darboux_eval", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// cyc_surface_eval_inverted per point (a surface carried through an
+// inversion, §5), to compare with BM_Eval of the same mode.
+void BM_EvalInverted(benchmark::State& state, Kind kind, bool full) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const cyc_surface* surf = f.surface(kind);
+  const Pairs& P = random_pairs();
+  const cyc_inversion inv = kInversion;
+  double x[3], xu[3], xv[3], n[3];
+  double* pdu = full ? xu : nullptr;
+  double* pdv = full ? xv : nullptr;
+  double* pn = full ? n : nullptr;
+  benchmark::DoNotOptimize(pdu);
+  std::size_t i = 0;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    const double* uv = P.uv[i++ & (kPairs - 1)];
+    const int st = cyc_surface_eval_inverted(f.ctx, surf, &inv, uv[0], uv[1], x, pdu, pdv, pn);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(x);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_surface_eval_inverted", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+BENCHMARK(BM_DcmcCore);
+BENCHMARK(BM_DcmcCapi);
+BENCHMARK(BM_InvertDarboux);
+BENCHMARK_CAPTURE(BM_DarbouxValueGradient, capi, true);
+BENCHMARK_CAPTURE(BM_DarbouxValueGradient, core, false);
+BENCHMARK_CAPTURE(BM_EvalInverted, prcs_point, Kind::prcs, false);
+BENCHMARK_CAPTURE(BM_EvalInverted, prcs_point_du_dv_normal, Kind::prcs, true);
+BENCHMARK_CAPTURE(BM_EvalInverted, prrs_point, Kind::prrs, false);
+BENCHMARK_CAPTURE(BM_EvalInverted, prrs_point_du_dv_normal, Kind::prrs, true);
 
 }  // namespace

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the seed corpora fuzz/corpus/fuzz_create/ and fuzz/corpus/fuzz_eval/.
+"""Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/ and fuzz_darboux/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -764,6 +764,358 @@ def eval_seeds():
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_darboux
+
+class DarbouxEncoder(Encoder):
+    """Mirrors fuzz_darboux.cpp. surface: None, "example2", "example3" or
+    ("lines", p1, d1, p2, d2, u0_quarters, len_quarters)."""
+
+    def __init__(self, surface=None, handler=True):
+        super().__init__()
+        self.flag(handler)
+        self.has_surface = surface is not None
+        if surface is None:
+            self.range(0, 3, 0)
+        elif surface == "example2":
+            self.range(0, 3, 1)
+        elif surface == "example3":
+            self.range(0, 3, 2)
+        else:
+            _, p1, d1, p2, d2, a4, len4 = surface
+            self.range(0, 3, 3)
+            for v in list(p1) + list(d1) + list(p2) + list(d2):
+                self.moderate(v)
+            self.range(-8, 8, a4)
+            self.range(1, 16, len4)
+        self.nops = 0
+        self.nops_at = len(self.consumed)
+
+    def finish(self):
+        body = self.consumed[self.nops_at:]
+        self.consumed = self.consumed[:self.nops_at]
+        assert 1 <= self.nops <= 16
+        self.range(1, 16, self.nops)
+        self.consumed.extend(body)
+        return self.data()
+
+    def op(self, code):
+        self.nops += 1
+        self.range(0, 7, code)
+
+    # -- values (fuzz_darboux.cpp coord, direction, inversion, point)
+    def coord(self, v):
+        if math.isfinite(v) and v == int(v) and -4 <= v <= 4:
+            self.range(0, 3, 3)
+            self.range(-4, 4, int(v))
+        elif not math.isnan(v) and not math.isinf(v) and abs(v) <= 10 and \
+                (v * (1 << 20) / 10.0) == round(v * (1 << 20) / 10.0):
+            self.range(0, 3, 0)
+            self.moderate(v)
+        else:
+            self.range(0, 3, 1)
+            self.wild(v)
+
+    def coords(self, vs):
+        for v in vs:
+            self.coord(v)
+
+    def direction(self, d):
+        axes = [(1, 0, 0), (0, 1, 0), (0, 0, 1), (-1, 0, 0), (0, -1, 0), (0, 0, -1)]
+        if tuple(d) in axes:
+            self.flag(True)
+            self.range(0, 5, axes.index(tuple(d)))
+        else:
+            self.flag(False)
+            self.coords(d)
+
+    def inversion(self, center, radius):
+        self.coords(center)
+        e = math.frexp(radius)[1] - 1 if radius > 0 else None
+        if radius > 0 and -10 <= e <= 10 and radius == 2.0 ** e:
+            self.range(0, 2, 0)
+            self.range(-10, 10, e)
+        else:
+            self.range(0, 2, 1)
+            self.coord(radius)
+
+    def point(self, spec):
+        """("p", xyz) | ("center",) | ("offset", e, (i, j, k)) | ("sphere", axis)
+        | ("wild", xyz)."""
+        kind = spec[0]
+        if kind == "p":
+            self.range(0, 4, 0)
+            self.coords(spec[1])
+        elif kind == "center":
+            self.range(0, 4, 1)
+        elif kind == "offset":
+            self.range(0, 4, 2)
+            self.range(1, 1074, spec[1])
+            for v in spec[2]:
+                self.range(-2, 2, v)
+        elif kind == "sphere":
+            self.range(0, 4, 3)
+            self.range(0, 2, spec[1])
+        else:
+            self.range(0, 4, 4)
+            for v in spec[1]:
+                self.wild(v)
+
+    def nulls(self, which=0, top=3):
+        self.rarely(which != 0)
+        if which:
+            self.range(1, top, which)
+
+    # -- ops
+    def invert_point(self, inv, point, nulls=0):
+        self.op(1)
+        self.inversion(*inv)
+        self.point(point)
+        self.nulls(nulls)
+
+    def invert_sphere(self, inv, sphere, nulls=0):
+        """sphere: ("sphere", C, axis_index, r or "through") | ("plane", n, P or
+        "through") | ("any", a, b, c)."""
+        self.op(2)
+        self.inversion(*inv)
+        kind = sphere[0]
+        if kind == "sphere":
+            _, C, a, r = sphere
+            self.range(0, 3, 0)
+            self.coords(C)
+            self.range(0, 5, a)
+            self.flag(r == "through")
+            if r != "through":
+                self.coord(r)
+        elif kind == "plane":
+            _, n, P = sphere
+            self.range(0, 3, 2)
+            self.direction(n)
+            self.flag(P == "through")
+            if P != "through":
+                self.coords(P)
+        else:
+            _, a, b, c = sphere
+            self.range(0, 3, 3)
+            self.coord(a)
+            self.coords(b)
+            self.coord(c)
+        self.nulls(nulls)
+
+    def invert_circle(self, inv, is_line, axis, radius=None, through=None, point=None,
+                      angle=5, nulls=0):
+        """through: t (a line point m + t axis, or the circle through m) or None
+        with point given."""
+        self.op(3)
+        self.inversion(*inv)
+        self.flag(is_line)
+        self.direction(axis)
+        self.flag(through is not None)
+        if not is_line:
+            self.flag(radius < 0)
+            self.coord(radius)
+        if through is not None:
+            self.coord(through)
+        else:
+            self.coords(point)
+        self.range(0, 63, angle)
+        self.nulls(nulls)
+
+    def darboux(self, spec):
+        """("coeffs", k14) | ("sparse", k14 moderate, zeros where 0) | ("ex4", alpha)
+        | ("sphere", C, r, s) | ("torus", C, r, s)."""
+        kind = spec[0]
+        if kind == "coeffs":
+            self.range(0, 3, 0)
+            self.coords(spec[1])
+        elif kind == "sparse":
+            self.range(0, 3, 1)
+            for v in spec[1]:
+                self.flag(v == 0)
+                if v != 0:
+                    self.moderate(v)
+        elif kind == "ex4":
+            self.range(0, 3, 2)
+            self.coord(spec[1])
+        else:
+            _, C, r, s = spec
+            self.range(0, 3, 3)
+            self.coords(C)
+            self.coord(r)
+            self.coord(s)
+            self.flag(kind == "sphere")
+
+    def darboux_eval(self, d, X, grad=True, nulls=0):
+        self.op(5)
+        self.darboux(d)
+        self.coords(X)
+        self.rarely(not grad)
+        self.nulls(nulls)
+
+    def classify(self, d, zero=False, nulls=0):
+        self.op(6)
+        self.darboux(d)
+        self.rarely(zero)
+        self.nulls(nulls, top=2)
+
+    def invert_darboux(self, inv, d, on=None, nulls=0):
+        self.op(4)
+        self.inversion(*inv)
+        self.darboux(d)
+        self.flag(on is not None)
+        if on is not None:
+            self.point(on)
+        self.nulls(nulls)
+
+    def dcmc(self, lines, near_parallel=None, normal=True, nulls=0, alpha=None, ts=0):
+        """lines: "ex4" | ("planes", [(P, (dx, dy))] * 3, coplanar) |
+        ("common", [P] * 3, d1, d2, a, b) | ("any", [(P, d)] * 3).
+        alpha: read only when the call succeeds."""
+        self.op(0)
+        if lines == "ex4":
+            self.range(0, 4, 0)
+        elif lines[0] == "planes":
+            self.range(0, 4, 1)
+            for P, d in lines[1]:
+                self.coords(P)
+                self.coord(d[0])
+                self.coord(d[1])
+            self.flag(lines[2])
+        elif lines[0] == "common":
+            _, Ps, d1, d2, a, b = lines
+            self.range(0, 4, 3)
+            for P in Ps:
+                self.coords(P)
+            self.coords(d1)
+            self.coords(d2)
+            self.coord(a)
+            self.coord(b)
+        else:
+            self.range(0, 4, 4)
+            for P, d in lines[1]:
+                self.coords(P)
+                self.coords(d)
+        self.rarely(near_parallel is not None)
+        if near_parallel is not None:
+            e, deltas = near_parallel
+            self.range(1, 60, e)
+            for v in deltas:
+                self.range(-1, 1, v)
+        self.rarely(not normal)
+        self.nulls(nulls)
+        if alpha is not None:
+            self.coord(alpha)
+            self.range(0, 3, ts)
+
+    def surface_inverted(self, inv, u, v, mask=7, null_point=False, center_on_surface=False):
+        """u: ("t", k of 1024) or ("w", x); v: ("m", x) or ("w", x)."""
+        self.op(7)
+        if not self.has_surface:
+            return
+        self.inversion(*inv)
+        self.flag(u[0] == "t")
+        (self.range(0, 1024, u[1]) if u[0] == "t" else self.wild(u[1]))
+        self.flag(v[0] == "m")
+        (self.moderate(v[1]) if v[0] == "m" else self.wild(v[1]))
+        self.rarely(mask != 7)
+        if mask != 7:
+            self.range(0, 7, mask)
+        self.rarely(null_point)
+        self.flag(center_on_surface)
+
+
+def darboux_seeds():
+    seeds = {}
+    unit = ((0, 0, 0), 1.0)
+    ex4 = "ex4"
+
+    # Example 4 of seed 000, eq. (34)-(35): DCMC, members, types, values.
+    e = DarbouxEncoder()
+    e.dcmc(ex4, alpha=0)
+    e.dcmc(ex4, alpha=2.5, ts=2)
+    e.dcmc(ex4, normal=False, alpha=-3, ts=1)
+    e.classify(("ex4", 0))
+    e.classify(("ex4", 1.5))
+    e.darboux_eval(("ex4", 0), (2, -2, -1))
+    e.darboux_eval(("ex4", 1), (0.5, 0, 0), grad=False)
+    e.invert_darboux(unit, ("ex4", 0), on=("p", (3, 0, 0)))
+    e.invert_darboux(((0, 0, 1), 0.5), ("ex4", 2), on=("p", (0, 3, 1)))
+    seeds["seed-example4-dcmc"] = e.finish()
+
+    # DCMC on lines in planes z = h, with a common normal in general
+    # position, coplanar, near-parallel, parallel and skew lines.
+    e = DarbouxEncoder(handler=False)
+    e.dcmc(("planes", [((1, 0, -1), (1, 2)), ((0, 1, 0.5), (-1, 1)), ((2, 2, 3), (0, 1))],
+            False), alpha=1, ts=3)
+    e.dcmc(("common", [(0, 0, 0), (1, 2, 3), (-1, 0, 2)], (1, 1, 0), (0, 1, 1), 2, -1),
+           alpha=0.5)
+    e.dcmc(("planes", [((0, 0, 0), (1, 0)), ((0, 0, 0), (0, 1)), ((0, 0, 2), (1, 1))], True))
+    e.dcmc(ex4, near_parallel=(40, (1, 0, -1)))
+    e.dcmc(("planes", [((0, 0, 0), (1, 0)), ((0, 0, 1), (2, 0)), ((0, 0, 2), (1, 1))], False))
+    e.dcmc(("any", [((0, 0, 0), (1, 0, 0)), ((0, 0, 1), (0, 1, 0)), ((0, 0, 2), (0, 1, 1))]))
+    e.dcmc(ex4, nulls=1)
+    e.dcmc(ex4, nulls=3)
+    seeds["seed-dcmc-lines"] = e.finish()
+
+    # The unit inversion: points, the center, a few ulps from it, the sphere
+    # itself; spheres and planes through the center; circles and lines
+    # through the center.
+    e = DarbouxEncoder()
+    e.invert_point(unit, ("p", (2, 0, 0)))
+    e.invert_point(unit, ("p", (0.5, -1.25, 3)))
+    e.invert_point(unit, ("center",))
+    e.invert_point(unit, ("offset", 1074, (1, 0, -1)))
+    e.invert_point(unit, ("offset", 30, (1, 2, 0)))
+    e.invert_point(unit, ("sphere", 1))
+    e.invert_sphere(unit, ("sphere", (1, 0, 0), 0, "through"))
+    e.invert_sphere(unit, ("sphere", (0, 2, 0), 2, 0.5))
+    e.invert_sphere(unit, ("plane", (0, 0, 1), "through"))
+    e.invert_sphere(unit, ("plane", (0, 1, 0), (0, 3, 0)))
+    e.invert_circle(unit, False, (0, 0, 1), radius=1, through=0)
+    e.invert_circle(unit, True, (1, 0, 0), through=2)
+    e.invert_circle(unit, True, (0, 1, 0), point=(1, 0, 0), angle=9)
+    e.invert_circle(unit, False, (1, 0, 0), radius=0.5, point=(0, 2, 0))
+    e.invert_darboux(unit, ("sphere", (1, 0, 0), 1, 1), on=("center",))
+    e.invert_darboux(unit, ("torus", (2, 0, 0), 1, 1), on=("p", (1, 0, 0)))
+    seeds["seed-unit-inversion"] = e.finish()
+
+    # Hostile inversions: NaN / Inf / zero / negative radius, huge centers,
+    # tiny and huge radii, NULL arguments.
+    e = DarbouxEncoder()
+    e.invert_point(((NAN, 0, 0), 1.0), ("p", (1, 2, 3)))
+    e.invert_point(((0, 0, 0), INF), ("p", (1, 2, 3)))
+    e.invert_point(((0, 0, 0), 0.0), ("p", (1, 2, 3)))
+    e.invert_point(((0, 0, 0), -1.0), ("p", (1, 2, 3)))
+    e.invert_point(((1e100, 0, 0), 2.0 ** -10), ("wild", (-1e100, 1e-300, 5e-324)))
+    e.invert_point(((1, 1, 1), 1e-160), ("p", (1, 1, 2)))
+    e.invert_point(unit, ("p", (1, 2, 3)), nulls=2)
+    e.invert_sphere(((0, 0, 0), 1e50), ("any", 0, (0, 0, 0), 1))
+    e.invert_circle(((1e90, 0, 0), 1.0), False, (0, 0, 1), radius=1e-90, point=(1, 1, 1))
+    e.invert_darboux(((0, 0, 0), 1e30), ("coeffs", [1e100] * 14), on=("p", (1, 1, 1)))
+    e.darboux_eval(("coeffs", [1e100] * 14), (1e100, 1e100, 1e100))
+    e.darboux_eval(("coeffs", [NAN] + [0] * 13), (0, 0, 0))
+    e.classify(("sparse", [0] * 14), zero=True)
+    e.classify(("coeffs", [1e-300] * 14))
+    seeds["seed-hostile-inversions"] = e.finish()
+
+    # Surfaces through an inversion: Example 2 (PRCS) and 3 (PRRS), the
+    # center on the surface, at infinity-bound parameters.
+    for name, surf in (("seed-surface-inverted-example2", "example2"),
+                       ("seed-surface-inverted-example3", "example3")):
+        e = DarbouxEncoder(surface=surf)
+        e.surface_inverted(((0, 0, 3), 1.0), ("t", 512), ("m", 0.5))
+        e.surface_inverted(((1, -1, 2), 0.5), ("t", 100), ("m", -2))
+        e.surface_inverted(((0, 0, 0), 2.0), ("t", 700), ("m", 1.5), center_on_surface=True)
+        e.surface_inverted(unit, ("w", NAN), ("m", 0.5))
+        e.surface_inverted(unit, ("t", 3), ("w", 1e100), mask=1)
+        e.surface_inverted(unit, ("t", 3), ("m", 1), null_point=True)
+        seeds[name] = e.finish()
+    e = DarbouxEncoder(surface=("lines", (0, 0, 0), (1, 0, 0), (0, 0, 1), (2, 1, 0), -2, 4))
+    e.surface_inverted(((0, 0, 3), 1.0), ("t", 256), ("m", 0.25))
+    seeds["seed-surface-inverted-prcs-lines"] = e.finish()
+
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -805,4 +1157,5 @@ def write_dictionary():
 if __name__ == "__main__":
     write("fuzz_create", create_seeds())
     write("fuzz_eval", eval_seeds())
+    write("fuzz_darboux", darboux_seeds())
     write_dictionary()

@@ -2,6 +2,7 @@
 // on the paper's worked examples (Example 4, Example 2 continued).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cyclide/darboux.hpp"
@@ -204,6 +205,51 @@ TEST(Darboux, InversionOfPointsSpheresAndCircles) {
   EXPECT_LE((back.point - c.point).norm(), 1e-12);
   EXPECT_NEAR(back.radius, 1.0, 1e-12);
   EXPECT_NEAR(std::abs(back.axis.z()), 1.0, 1e-12);
+}
+
+// Regression (fuzz_darboux, fuzz/corpus/fuzz_darboux/regress-circle-image-*):
+// when the image of a circle or line collapses below the resolution of
+// doubles (a circle near 1e100 inverted in a small sphere, or rho^2
+// underflowing to 0), the three image points coincide; invert_circle
+// returned ok with a "line" of axis (0, 0, 0). Now numerical_overflow.
+TEST(Darboux, InvertCircleCollapsedImageIsNumericalOverflow) {
+  CircleOrLine out;
+  const Inversion small{{0.1, -8, -8.9032}, 1.0 / 64};
+  const CircleOrLine far{false, {0x1.249ad2594c37dp+332, -9.375, -1.57}, {0, 1, 0}, 0.23};
+  EXPECT_EQ(invert_circle(small, far, out), Status::numerical_overflow);
+  const Inversion underflow{{0.0082, -5.4, -36.4}, 0x1.4395b31c8decfp-1017};
+  const CircleOrLine line{true, {7.8, 8, 9.9}, {1, 0, 0}, 0};
+  EXPECT_EQ(invert_circle(underflow, line, out), Status::numerical_overflow);
+  // Still fine: the same circle and line at a resolvable scale.
+  const CircleOrLine near{false, {3, -9.375, -1.57}, {0, 1, 0}, 0.23};
+  ASSERT_EQ(invert_circle(small, near, out), Status::ok);
+  EXPECT_NEAR(out.axis.norm(), 1.0, 1e-12);
+  ASSERT_EQ(invert_circle(Inversion{{0.0082, -5.4, -36.4}, 0.5}, line, out), Status::ok);
+  EXPECT_FALSE(out.is_line);
+  EXPECT_NEAR(out.axis.norm(), 1.0, 1e-12);
+}
+
+// Regression (fuzz_darboux, fuzz/corpus/fuzz_darboux/regress-nan-image-*):
+// with huge centers or radii the closed forms overflow to inf - inf = NaN in
+// one coefficient; the normalization's max skipped the NaN and
+// invert_sphere / invert_darboux returned ok with a NaN coefficient. Now
+// numerical_overflow.
+TEST(Darboux, InvertSphereAndDarbouxNaNImageIsNumericalOverflow) {
+  const Inversion big{{0x1.45p+2, 0x1.249ad2594c37bp+332, -4}, 0x1.249ad2594c379p+332};
+  const GeneralSphere S{-25, {14, -6, -0x1.26e978d4fdf3cp-4}, -8};
+  GeneralSphere R;
+  EXPECT_EQ(invert_sphere(big, S, R), Status::numerical_overflow);
+  const Inversion far{{-0x1.0624dd2f1a9fcp-9, -9, -81}, 0x1.51fb1af5204dap+135};
+  Darboux D;
+  const double k[kDarbouxCoeffs] = {0, 0, 0, 1, 0, -1, -3, -3, 0x1.d6p+9, -0x1.d6p+10,
+                                    0, 0x1.d6p+10, 2, 0x1.dae7fc63a19p+20};
+  std::copy(k, k + kDarbouxCoeffs, D.k);
+  Darboux out;
+  EXPECT_EQ(invert_darboux(far, D, out), Status::numerical_overflow);
+  // The same equations at a moderate inversion are fine.
+  ASSERT_EQ(invert_sphere(Inversion{{1, 2, 3}, 2}, S, R), Status::ok);
+  ASSERT_EQ(invert_darboux(Inversion{{1, 2, 3}, 2}, D, out), Status::ok);
+  for (double v : out.k) EXPECT_TRUE(std::isfinite(v));
 }
 
 TEST(Darboux, DcmcReportsDegenerateInput) {

@@ -4,6 +4,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cyclide/curve.hpp"
 
@@ -172,8 +173,11 @@ Status invert_sphere(const Inversion& inv, const GeneralSphere& S, GeneralSphere
   R.A = A2;
   R.B = B2y - 2 * A2 * m;
   R.C = C2y - B2y.dot(m) + A2 * m.squaredNorm();
+  // Every coefficient finite (std::max skips a NaN, e.g. inf - inf in R.C:
+  // fuzz_darboux found NaN returned with ok).
+  if (!std::isfinite(R.A) || !R.B.allFinite() || !std::isfinite(R.C))
+    return Status::numerical_overflow;
   const double s = std::max({std::abs(R.A), R.B.cwiseAbs().maxCoeff(), std::abs(R.C)});
-  if (!std::isfinite(s)) return Status::numerical_overflow;
   if (!(s > 0)) return Status::invalid_argument;
   R.A /= s;
   R.B /= s;
@@ -184,7 +188,19 @@ Status invert_sphere(const Inversion& inv, const GeneralSphere& S, GeneralSphere
 
 namespace {
 
-// The circle through three points (is_line if they are collinear).
+// Whether the three points are resolved: pairwise apart by more than the
+// rounding of their coordinates. An image that collapses below that (a far
+// circle, or rho^2 underflowing) has no circle through them (fuzz_darboux
+// found a zero-axis "line" returned with ok).
+bool apart(const Vec3d& a, const Vec3d& b) {
+  const double big = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  return (b - a).norm() > 64 * std::numeric_limits<double>::epsilon() * big;
+}
+bool distinct(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  return apart(a, b) && apart(a, c) && apart(b, c);
+}
+
+// The circle through three distinct points (is_line if they are collinear).
 CircleOrLine through(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
   CircleOrLine r;
   const Vec3d ab = b - a, ac = c - a, n = ab.cross(ac);
@@ -221,7 +237,9 @@ Status invert_circle(const Inversion& inv, const CircleOrLine& c, CircleOrLine& 
       r.axis = ax;
     } else {
       const Vec3d foot = c.point + w.dot(ax) * ax;  // nearest to m
-      r = through(inv.m, invert_raw(inv, foot + off * ax), invert_raw(inv, foot - off * ax));
+      const Vec3d p = invert_raw(inv, foot + off * ax), q = invert_raw(inv, foot - off * ax);
+      if (!distinct(inv.m, p, q)) return Status::numerical_overflow;
+      r = through(inv.m, p, q);
     }
   } else {
     if (!(c.radius > 0)) return Status::invalid_argument;
@@ -236,13 +254,16 @@ Status invert_circle(const Inversion& inv, const CircleOrLine& c, CircleOrLine& 
       const double t = angle0 + 2.0943951023931957 * (i + 0.5);  // away from m's angle
       P[i] = c.point + c.radius * (std::cos(t) * e1 + std::sin(t) * e2);
     }
+    const Vec3d Q0 = invert_raw(inv, P[0]), Q1 = invert_raw(inv, P[1]);
     if (on <= 1e-14 * (c.radius + w.norm())) {
+      if (!apart(Q0, Q1)) return Status::numerical_overflow;
       r.is_line = true;
-      const Vec3d a = invert_raw(inv, P[0]), b = invert_raw(inv, P[1]);
-      r.point = a;
-      r.axis = (b - a).normalized();
+      r.point = Q0;
+      r.axis = (Q1 - Q0).normalized();
     } else {
-      r = through(invert_raw(inv, P[0]), invert_raw(inv, P[1]), invert_raw(inv, P[2]));
+      const Vec3d Q2 = invert_raw(inv, P[2]);
+      if (!distinct(Q0, Q1, Q2)) return Status::numerical_overflow;
+      r = through(Q0, Q1, Q2);
     }
   }
   if (!input_ok(r.point) || !input_ok(r.axis) || !std::isfinite(r.radius))
@@ -261,8 +282,11 @@ Status invert_darboux(const Inversion& inv, const Darboux& D, Darboux& out) {
   Darboux H;
   H.set(G.c(), k * G.b(), k * k * G.Q(), k * k * k * G.l(), k * k * k * k * G.phi0());
   Darboux R = translate(H, -inv.m);
+  // Every coefficient finite (scale() skips a NaN, e.g. inf - inf or 0 inf:
+  // fuzz_darboux found NaN returned with ok).
+  for (double v : R.k)
+    if (!std::isfinite(v)) return Status::numerical_overflow;
   const double s = R.scale();
-  if (!std::isfinite(s)) return Status::numerical_overflow;
   if (!(s > 0)) return Status::invalid_argument;
   for (double& v : R.k) v /= s;
   out = R;
