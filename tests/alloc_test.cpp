@@ -618,3 +618,29 @@ TEST_F(AllocFree, DarbouxInversionAndDcmc) {
   EXPECT_EQ(h.allocations, 0);
   EXPECT_EQ(h.frees, 0);
 }
+
+// The line analysis of parabolic cyclides and §8 are allocation-free too.
+TEST_F(AllocFree, ParabolicLinesPencilCirclesAndSection8) {
+  const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
+  const cyc_line ex5[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}}, {{1, 1, 1}, {-1, 2, 0}}};
+  const cyc_line x_axis = {{0, 0, 0}, {1, 0, 0}};
+  const double side[3] = {0, 0.6, 0.8};
+  cyc_cyclide_lines A;
+  cyc_circle_or_line c;
+  cyc_prrs_lines_analysis P;
+  cyc_darboux D;
+  double residual = 1;
+  int bad = 0;
+  const Heap h = measure([&] {
+    for (int r = 0; r < kRepeat; ++r) {
+      bad += cyc_parabolic_lines(ctx, &c39, &A) != CYC_OK;
+      bad += cyc_pencil_circle(ctx, &c39, &x_axis, side, &c) != CYC_OK;
+      bad += cyc_prrs_lines_analyze(ctx, ex5, &P) != CYC_OK;
+      bad += cyc_prrs_lines_cyclide(ctx, ex5, &D, &residual) != CYC_OK;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(A.line_count, 5);
+  EXPECT_EQ(h.allocations, 0);
+  EXPECT_EQ(h.frees, 0);
+}

@@ -2005,6 +2005,96 @@ static void test_darboux(cyc_context* ctx) {
   }
 }
 
+/* Lines and circle families of parabolic cyclides, Props. 3 and 5, §8. */
+static void test_darboux_lines(cyc_context* ctx) {
+  /* (39) and (61). */
+  const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
+  const cyc_darboux c61 = {{0, 0, 0, 1, 0, -1, -3.25, 0.5, -0.5, 0.5, 0, 0, 0.75, 0}};
+  const cyc_darboux sphere = {{0, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, -1}};
+  /* (57) with l3^ of (58), and with the original d3. */
+  const cyc_line ex5[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}}, {{1, 1, 1}, {-1, 2, 0}}};
+  const cyc_line ex5_orig[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}}, {{1, 1, 1}, {-2, 4, 0}}};
+  const cyc_line x_axis = {{0, 0, 0}, {1, 0, 0}}, off = {{0, 0, 5}, {1, 0, 0}};
+  const double up[3] = {0, 0, 1}, side[3] = {0, 0.6, 0.8};
+  cyc_cyclide_lines A;
+  cyc_circle_or_line c;
+  cyc_prrs_lines_analysis P;
+  cyc_darboux D;
+  cyc_line in[3];
+  cyc_surface* S = SURF_SENT;
+  double x[3], value, residual = SENT;
+  int i, doubles = 0, kind;
+
+  /* Example 2 continued: five lines, l3 double (Prop. 2 (II)). */
+  memset(&A, 0x5a, sizeof A);
+  CHECK_STATUS(ctx, cyc_parabolic_lines(ctx, &sphere, &A), CYC_E_NOT_PARABOLIC);
+  CHECK_STATUS(ctx, cyc_parabolic_lines(ctx, NULL, &A), CYC_E_NULL_ARGUMENT);
+  CHECK(A.line_count == 0x5a5a5a5a);
+  CHECK_STATUS(ctx, cyc_parabolic_lines(ctx, &c39, &A), CYC_OK);
+  CHECK(A.line_count == 5 && A.circle_families == 5 && A.double_families == 1);
+  CHECK(fabs(fabs(A.normal[2]) - 1) < TOL && A.l0_circles == 0);
+  for (i = 0; i < A.line_count; ++i) {
+    doubles += A.lines[i].multiplicity == 2;
+    if (A.lines[i].multiplicity == 2) CHECK(fabs(A.lines[i].t + 0.25) < TOL);
+    CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &c39, A.lines[i].point, &value, NULL), CYC_OK);
+    CHECK(fabs(value) < 1e-11);
+  }
+  CHECK(doubles == 1);
+  for (i = 0; i < A.plane_count; ++i)
+    CHECK(A.plane_kind[i] >= CYC_SECTION_LINE_PAIR && A.plane_kind[i] <= CYC_SECTION_LINE_AND_L0);
+
+  /* Pencil circles through the x-axis (l1). */
+  fill(c.point, 3);
+  CHECK_STATUS(ctx, cyc_pencil_circle(ctx, &c39, &off, side, &c), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_pencil_circle(ctx, &c39, &x_axis, NULL, &c), CYC_E_NULL_ARGUMENT);
+  CHECK(untouched(c.point, 3));
+  CHECK_STATUS(ctx, cyc_pencil_circle(ctx, &c39, &x_axis, side, &c), CYC_OK);
+  CHECK(!c.is_line && c.radius > 0 && fabs(dot3(c.axis, side)) > 1 - TOL);
+  x[0] = c.point[0] + c.radius;  /* (1,0,0) lies in the plane (normal side) */
+  x[1] = c.point[1];
+  x[2] = c.point[2];
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &c39, x, &value, NULL), CYC_OK);
+  CHECK(fabs(value) < 1e-11);
+  CHECK_STATUS(ctx, cyc_pencil_circle(ctx, &c39, &x_axis, up, &c), CYC_OK);
+  CHECK(c.is_line);  /* the plane through l0: l1^ of (43) */
+
+  /* Prop. 3 on (39), Prop. 5 on (61). */
+  CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, &c39, 7, -1, 1, in, &S), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, &sphere, CYC_SURFACE_PRCS, -1, 1, in, &S),
+               CYC_E_NOT_PARABOLIC);
+  CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, &c61, CYC_SURFACE_PRCS, -1, 1, in, &S),
+               CYC_E_NOT_CANAL);
+  CHECK(S == SURF_SENT);
+  for (kind = CYC_SURFACE_PRCS; kind <= CYC_SURFACE_PRRS; ++kind) {
+    const cyc_darboux* d = kind == CYC_SURFACE_PRCS ? &c39 : &c61;
+    int u, v;
+    S = NULL;
+    CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, d, kind, -2, 2, in, &S), CYC_OK);
+    if (!S) continue;
+    CHECK(norm3(in[0].direction) > 0 && norm3(in[1].direction) > 0);
+    for (u = -2; u <= 2; ++u)
+      for (v = -3; v <= 3; ++v) {
+        CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, u, v, x, NULL, NULL, NULL), CYC_OK);
+        CHECK_STATUS(ctx, cyc_darboux_eval(ctx, d, x, &value, NULL), CYC_OK);
+        CHECK(fabs(value) < 1e-10 * (1 + dot3(x, x)));
+      }
+    cyc_surface_destroy(ctx, S);
+  }
+
+  /* §8, Example 5: mu = 1/2 (58), l4 = (u, u, 1/4) (59), (61). */
+  CHECK_STATUS(ctx, cyc_prrs_lines_analyze(ctx, ex5_orig, &P), CYC_OK);
+  CHECK(P.pencil && !P.cyclide && fabs(P.mu - 0.5) < TOL);
+  CHECK_STATUS(ctx, cyc_prrs_lines_analyze(ctx, ex5, &P), CYC_OK);
+  CHECK(P.coplanar_pair && P.common_parameter && P.pencil && P.cyclide);
+  CHECK(fabs(fabs(P.l4.direction[0]) - sqrt(0.5)) < TOL && fabs(P.l4.point[2] - 0.25) < TOL);
+  fill(D.k, CYC_DARBOUX_COEFFS);
+  CHECK_STATUS(ctx, cyc_prrs_lines_cyclide(ctx, NULL, &D, &residual), CYC_E_NULL_ARGUMENT);
+  CHECK(untouched(D.k, CYC_DARBOUX_COEFFS) && residual == SENT);
+  CHECK_STATUS(ctx, cyc_prrs_lines_cyclide(ctx, ex5, &D, &residual), CYC_OK);
+  CHECK(residual < 1e-13);
+  for (i = 0; i < CYC_DARBOUX_COEFFS; ++i) CHECK(fabs(D.k[i] - D.k[3] * c61.k[i]) < 1e-14);
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -2025,6 +2115,7 @@ int main(void) {
     test_example3(ctx);
     test_construction_errors(ctx);
     test_darboux(ctx);
+    test_darboux_lines(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

@@ -4,6 +4,7 @@
 // Outputs are written only after everything has succeeded.
 #include "capi_internal.hpp"
 #include "cyclide/darboux.hpp"
+#include "cyclide/darboux_lines.hpp"
 #include "cyclide/hermite.hpp"
 
 using namespace cyclide;
@@ -693,6 +694,145 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
     if (normal) put3(normal, F.n);
     put_darboux(base, F.base);
     put_darboux(quadric, F.quadric);
+    return ok();
+  });
+}
+
+// ------------------------------------------------------------ lines of parabolic cyclides
+
+namespace {
+Line read_line(const cyc_line& l) { return {vec(l.point), vec(l.direction)}; }
+void put_line(cyc_line& out, const Line& L) {
+  put3(out.point, L.P);
+  put3(out.direction, L.d);
+}
+}  // namespace
+
+int cyc_parabolic_lines(cyc_context* ctx, const cyc_darboux* d, cyc_cyclide_lines* out) {
+  const char* fn = "cyc_parabolic_lines";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(out);
+    Darboux D;
+    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    ParabolicLines A;
+    if (Status s = parabolic_lines(D, A); s != Status::ok) return from_core(fn, s);
+    cyc_cyclide_lines R;
+    std::memset(&R, 0, sizeof R);
+    put3(R.normal, A.n);
+    R.plane_count = A.plane_count;
+    for (int i = 0; i < A.plane_count; ++i) {
+      R.plane_t[i] = A.planes[i].t;
+      R.plane_kind[i] = int(A.planes[i].kind);
+    }
+    R.line_count = A.line_count;
+    for (int i = 0; i < A.line_count; ++i) {
+      put3(R.lines[i].point, A.lines[i].line.P);
+      put3(R.lines[i].direction, A.lines[i].line.d);
+      R.lines[i].t = A.lines[i].t;
+      R.lines[i].multiplicity = A.lines[i].multiplicity;
+    }
+    R.l0_circles = A.l0_circles ? 1 : 0;
+    R.circle_families = A.circle_families();
+    R.double_families = A.double_families();
+    *out = R;
+    return ok();
+  });
+}
+
+int cyc_pencil_circle(cyc_context* ctx, const cyc_darboux* d, const cyc_line* line,
+                      const double plane_normal[3], cyc_circle_or_line* out) {
+  const char* fn = "cyc_pencil_circle";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(line);
+    REQUIRE(plane_normal);
+    REQUIRE(out);
+    Darboux D;
+    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    CircleOrLine C;
+    const Status s = pencil_circle(D, read_line(*line), vec(plane_normal), C);
+    if (s == Status::invalid_argument)
+      return fail(int(s), "%s: the line must lie on the cyclide and in the plane", fn);
+    if (s != Status::ok) return from_core(fn, s);
+    out->is_line = C.is_line ? 1 : 0;
+    put3(out->point, C.point);
+    put3(out->axis, C.axis);
+    out->radius = C.radius;
+    return ok();
+  });
+}
+
+int cyc_parabolic_parameterize(cyc_context* ctx, const cyc_darboux* d, int kind, double u0,
+                               double u1, cyc_line inputs[3], cyc_surface** out) {
+  const char* fn = "cyc_parabolic_parameterize";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(out);
+    if (kind != CYC_SURFACE_PRCS && kind != CYC_SURFACE_PRRS)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: kind %d is neither CYC_SURFACE_PRCS nor "
+                  "CYC_SURFACE_PRRS", fn, kind);
+    Darboux D;
+    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    Surface S;
+    PencilInput I;
+    const Status s = kind == CYC_SURFACE_PRCS ? parameterize_parabolic_prcs(D, u0, u1, S, &I)
+                                              : parameterize_parabolic_prrs(D, u0, u1, S, &I);
+    if (s != Status::ok) return from_core(fn, s);
+    cyc_line L[3];
+    std::memset(L, 0, sizeof L);
+    for (int j = 0; j < I.count; ++j) put_line(L[j], I.curves[j]);
+    if (Outcome o = emit(fn, ctx, out, S); o.status) return o;
+    if (inputs) std::memcpy(inputs, L, sizeof L);
+    return ok();
+  });
+}
+
+int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
+                           cyc_prrs_lines_analysis* out) {
+  const char* fn = "cyc_prrs_lines_analyze";
+  return run(ctx, fn, [&] {
+    REQUIRE(lines);
+    REQUIRE(out);
+    const Line L[3] = {read_line(lines[0]), read_line(lines[1]), read_line(lines[2])};
+    PrrsLinesAnalysis A;
+    if (Status s = prrs_lines_analysis(L, A); s != Status::ok) return from_core(fn, s);
+    cyc_prrs_lines_analysis R;
+    std::memset(&R, 0, sizeof R);
+    R.coplanar_pair = A.coplanar_pair;
+    R.common_parameter = A.common_parameter;
+    R.a2 = A.a2;
+    R.b2 = A.b2;
+    R.a3 = A.a3;
+    R.b3 = A.b3;
+    R.x3 = A.x3;
+    R.y3 = A.y3;
+    R.cond55 = A.cond55;
+    R.cond56 = A.cond56;
+    R.pencil = A.pencil;
+    R.cyclide = A.cyclide;
+    R.mu = A.mu;
+    if (A.pencil) put_line(R.l4, A.l4);
+    *out = R;
+    return ok();
+  });
+}
+
+int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darboux* out,
+                           double* residual) {
+  const char* fn = "cyc_prrs_lines_cyclide";
+  return run(ctx, fn, [&] {
+    REQUIRE(lines);
+    REQUIRE(out);
+    const Line L[3] = {read_line(lines[0]), read_line(lines[1]), read_line(lines[2])};
+    Darboux D;
+    double r = 0;
+    const Status s = prrs_lines_cyclide(L, D, &r);
+    if (s == Status::invalid_argument)
+      return fail(int(s), "%s: l1, l2 must meet in one plane at one parameter and (55) hold", fn);
+    if (s != Status::ok) return from_core(fn, s);
+    put_darboux(out, D);
+    if (residual) *residual = r;
     return ok();
   });
 }

@@ -325,6 +325,96 @@ CYC_API int cyc_surface_eval_inverted(cyc_context* ctx, const cyc_surface* surfa
 CYC_API int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3],
                      cyc_darboux* base, cyc_darboux* quadric);
 
+/* ---------------------- lines and circle families of parabolic cyclides (§6-8) */
+
+/** Capacities of cyc_cyclide_lines (frozen): a cubic surface has at
+ *  most 10 lines meeting the line l0 at infinity (two in each of five
+ *  planes); the real ones on a parabolic cyclide are at most six. */
+#define CYC_MAX_CYCLIDE_LINES 10
+#define CYC_MAX_SECTION_PLANES 5
+
+/** The degenerate conic of a plane n.X = t through l0 (frozen numbers). */
+enum cyc_section_kind {
+  CYC_SECTION_LINE_PAIR = 1,      /* two real lines (meeting or parallel) */
+  CYC_SECTION_DOUBLE_LINE = 2,    /* one real line counted twice */
+  CYC_SECTION_IMAGINARY_PAIR = 3, /* complex conjugate lines */
+  CYC_SECTION_LINE_AND_L0 = 4     /* one finite line, l0 counted twice */
+};
+
+/** A real line on a parabolic cyclide (frozen). */
+typedef struct cyc_cyclide_line {
+  double point[3];     /* the point nearest the origin */
+  double direction[3]; /* unit, orthogonal to the normal n */
+  double t;            /* the line lies in the plane n.X = t */
+  int multiplicity;    /* 2 for a double line: its circles count twice */
+} cyc_cyclide_line;
+
+/** The lines and circle families of a parabolic cyclide (frozen). Every
+ *  plane through a line (except the plane n.X = t) cuts a circle: one
+ *  family per line; a double line's family has multiplicity two (a canal
+ *  surface: one double line; a Dupin cyclide: two). */
+typedef struct cyc_cyclide_lines {
+  double normal[3];  /* n: the planes n.X = t contain l0 */
+  int plane_count;   /* planes n.X = t whose conic is degenerate */
+  double plane_t[CYC_MAX_SECTION_PLANES];
+  int plane_kind[CYC_MAX_SECTION_PLANES]; /* enum cyc_section_kind */
+  int line_count;    /* distinct real finite lines */
+  cyc_cyclide_line lines[CYC_MAX_CYCLIDE_LINES];
+  int l0_circles;       /* 1 if the planes n.X = t cut circles (one more family) */
+  int circle_families;  /* real families of circles: line_count + l0_circles */
+  int double_families;  /* families of multiplicity two (double lines) */
+} cyc_cyclide_lines;
+
+/** The real lines of a parabolic (cubic, irreducible) Darboux cyclide and
+ *  its families of circles. CYC_E_NOT_PARABOLIC for other types (invert a
+ *  quartic at one of its points first: cyc_invert_darboux). */
+CYC_API int cyc_parabolic_lines(cyc_context* ctx, const cyc_darboux* d, cyc_cyclide_lines* out);
+
+/** The circle cut from a parabolic cyclide by the plane through its line
+ *  `line` with unit normal `plane_normal` (orthogonal to the line), besides
+ *  the line itself; for the plane through l0, the other line of the pair
+ *  (is_line). CYC_E_INVALID_ARGUMENT if the line is not on the cyclide or
+ *  the plane does not contain it; CYC_E_EMPTY_REAL_LOCUS if the circle is
+ *  imaginary. */
+CYC_API int cyc_pencil_circle(cyc_context* ctx, const cyc_darboux* d, const cyc_line* line,
+                              const double plane_normal[3], cyc_circle_or_line* out);
+
+/** Parameterize a parabolic cyclide over u in [u0, u1] (f = v) by PRCS
+ *  (kind CYC_SURFACE_PRCS, Prop. 3: needs a double line and three mutually
+ *  skew lines; CYC_E_NOT_CANAL without a double line) or PRRS
+ *  (CYC_SURFACE_PRRS, Prop. 5: a line and three lines outside its plane,
+ *  not all coplanar). The circles u = const lie in the pencil of planes
+ *  through one line of the cyclide; CYC_E_TOO_FEW_LINES if the lines are
+ *  missing. The linearly parameterized input lines are written to
+ *  `inputs` (3 entries, may be NULL; the third is unused for PRCS).
+ *  Allocates the surface (creation tier). */
+CYC_API int cyc_parabolic_parameterize(cyc_context* ctx, const cyc_darboux* d, int kind,
+                                       double u0, double u1, cyc_line inputs[3],
+                                       cyc_surface** out);
+
+/** Seed 000 §8: PRRS of three lines l_i(u) = point + u direction with a
+ *  common normal, l1 and l2 in one plane (frozen). In the normal form (52)
+ *  the surface is a parabolic cyclide iff (55) and (56) hold (Prop. 4). */
+typedef struct cyc_prrs_lines_analysis {
+  int coplanar_pair;     /* l1, l2 lie in one plane */
+  int common_parameter;  /* l1(u0) = l2(u0) for one u0 */
+  double a2, b2, a3, b3, x3, y3; /* the normal form (52) */
+  double cond55, cond56; /* the left-hand sides of (55), (56) */
+  int pencil;            /* (55): the circle planes form a pencil */
+  int cyclide;           /* (55) and (56): a parabolic Darboux cyclide */
+  double mu;             /* nonzero root of (56) for d3 -> mu d3 (0: none) */
+  cyc_line l4;           /* the pencil's axis (59), if pencil */
+} cyc_prrs_lines_analysis;
+
+CYC_API int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
+                                   cyc_prrs_lines_analysis* out);
+/** §8's construction: DCMC on l1, l3, l4 and the member containing l2;
+ *  residual (may be NULL) is the largest relative distance of l2 from it,
+ *  ~0 exactly when (56) holds. CYC_E_INVALID_ARGUMENT unless l1, l2 meet
+ *  in one plane at one parameter and (55) holds. */
+CYC_API int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darboux* out,
+                                   double* residual);
+
 /* ------------------------------------------------------------ optimizer */
 
 /** 1 if this build includes the Ceres-based optimizer tier, else 0. The
