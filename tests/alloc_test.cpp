@@ -601,6 +601,9 @@ TEST_F(AllocFree, DarbouxInversionAndDcmc) {
   cyc_circle_or_line c2;
   double n[3], value = 0, grad[3], x[3] = {0.5, -0.25, 1.0}, y[3], p[3], pu[3], pv[3], pn[3];
   int type = -1, bad = 0;
+  double gu[2] = {0.1, 0.2}, gv[100], gpts[600], gnrm[600];
+  for (int j = 0; j < 100; ++j) gv[j] = 0.05 * j - 2.5;
+  const cyc_buffer3 gp = {gpts, 200, 3}, gn = {gnrm, 200, 3};
   const Heap h = measure([&] {
     for (int r = 0; r < kRepeat; ++r) {
       bad += cyc_dcmc(ctx, lines, n, &base, &quadric) != CYC_OK;
@@ -611,6 +614,9 @@ TEST_F(AllocFree, DarbouxInversionAndDcmc) {
       bad += cyc_invert_sphere(ctx, &inv, &sphere, &s2) != CYC_OK;
       bad += cyc_invert_circle(ctx, &inv, &circle, &c2) != CYC_OK;
       bad += cyc_surface_eval_inverted(ctx, prcs, &inv, 0.3, 0.1 * r, p, pu, pv, pn) != CYC_OK;
+      bad += cyc_surface_circle_inverted(ctx, prcs, &inv, 0.3, &c2) != CYC_OK;
+      bad += cyc_surface_eval_grid_inverted(ctx, prcs, &inv, gu, 2, gv, 100, gp, {}, {}, gn,
+                                            nullptr) != CYC_OK;
     }
   });
   EXPECT_EQ(bad, 0);

@@ -2001,6 +2001,40 @@ static void test_darboux(cyc_context* ctx) {
     CHECK_STATUS(ctx, cyc_surface_eval_inverted(ctx, e.S, NULL, 0.3, 0.4, p, NULL, NULL, NULL),
                  CYC_E_NULL_ARGUMENT);
     CHECK(untouched(p, 3));
+    /* The inverted circle family: grid rows lie on the inverted circles;
+     * a grid through the center leaves the buffers untouched. */
+    {
+      const double us[2] = {-0.2, 0.3}, vs[3] = {-1, 0.4, 5};
+      double g[18], gn[18];
+      cyc_buffer3 P = {g, 6, 3}, N = {gn, 6, 3}, none = {NULL, 0, 0};
+      cyc_circle_or_line c;
+      cyc_inversion at;
+      size_t sing = 7;
+      int r, j;
+      CHECK_STATUS(ctx, cyc_surface_eval_grid_inverted(ctx, e.S, &inv, us, 2, vs, 3, P, none,
+                                                       none, N, &sing), CYC_OK);
+      CHECK(sing == 0);
+      for (r = 0; r < 2; ++r) {
+        CHECK_STATUS(ctx, cyc_surface_circle_inverted(ctx, e.S, &inv, us[r], &c), CYC_OK);
+        CHECK(c.is_line == 0);
+        for (j = 0; j < 3; ++j) {
+          const double* X = g + 3 * (3 * r + j);
+          const double d[3] = {X[0] - c.point[0], X[1] - c.point[1], X[2] - c.point[2]};
+          CHECK(fabs(norm3(d) - c.radius) < 1e-12 && fabs(dot3(d, c.axis)) < 1e-12);
+          CHECK(fabs(norm3(gn + 3 * (3 * r + j)) - 1) < 1e-12);
+        }
+      }
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, e.S, 0.3, 0.4, at.center, NULL, NULL, NULL), CYC_OK);
+      at.radius = 1;
+      fill(g, 18);
+      CHECK_STATUS(ctx, cyc_surface_eval_grid_inverted(ctx, e.S, &at, us, 2, vs, 3, P, none, none,
+                                                       none, NULL), CYC_E_AT_INVERSION_CENTER);
+      CHECK_STATUS(ctx, cyc_surface_eval_grid_inverted(ctx, e.S, NULL, us, 2, vs, 3, P, none, none,
+                                                       none, NULL), CYC_E_NULL_ARGUMENT);
+      CHECK(untouched(g, 18));
+      CHECK_STATUS(ctx, cyc_surface_circle_inverted(ctx, e.S, &at, 0.3, &c), CYC_OK);
+      CHECK(c.is_line == 1);
+    }
     ex2_destroy(ctx, &e);
   }
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cyclide/darboux.hpp"
+#include "cyclide/inverted_surface.hpp"
 
 namespace cyclide {
 namespace {
@@ -250,6 +251,68 @@ TEST(Darboux, InvertSphereAndDarbouxNaNImageIsNumericalOverflow) {
   ASSERT_EQ(invert_sphere(Inversion{{1, 2, 3}, 2}, S, R), Status::ok);
   ASSERT_EQ(invert_darboux(Inversion{{1, 2, 3}, 2}, D, out), Status::ok);
   for (double v : out.k) EXPECT_TRUE(std::isfinite(v));
+}
+
+// §5: the inverted PRCS surface of Example 2 is a circle family on the
+// inverted cyclide (39): grids agree with single points bit for bit, and the
+// inverted circles carry the grid's rows.
+TEST(Darboux, InvertedSurfaceGridAndCirclesLieOnTheInvertedCyclide) {
+  RationalCurve l1, l2;
+  ASSERT_EQ(make_line({0, 0, 0}, {1, 0, 0}, l1), Status::ok);
+  ASSERT_EQ(make_line({0, 0, 1}, {2, 1, 0}, l2), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_prcs(l1, l2, nullptr, -0.5, 0.5, S), Status::ok);
+  const Inversion inv{{0.3, -0.7, 0.4}, 1.3};
+  Darboux img;
+  ASSERT_EQ(invert_darboux(inv, example2(), img), Status::ok);
+  EXPECT_EQ(darboux_type(img), DarbouxType::quartic);  // the center is not on (39)
+  const double us[3] = {-0.5, 0.1, 0.45}, vs[5] = {-3, -0.5, 0, 0.7, 40};
+  double P[15 * 3], U[15 * 3], V[15 * 3], N[15 * 3];
+  std::size_t singular = 99;
+  ASSERT_EQ(eval_grid_inverted(S, inv, us, 3, vs, 5, {P, 3}, {U, 3}, {V, 3}, {N, 3}, &singular),
+            Status::ok);
+  EXPECT_EQ(singular, 0u);
+  for (int i = 0; i < 3; ++i) {
+    CircleOrLine c;
+    ASSERT_EQ(inverted_circle(S, inv, us[i], c), Status::ok);
+    ASSERT_FALSE(c.is_line);
+    for (int j = 0; j < 5; ++j) {
+      const int k = 5 * i + j;
+      const Vec3d X(P + 3 * k);
+      EXPECT_NEAR(img.value(X) / img.gradient(X).norm(), 0.0, 1e-12);
+      EXPECT_NEAR((X - c.point).norm(), c.radius, 1e-12);
+      EXPECT_NEAR((X - c.point).dot(c.axis), 0.0, 1e-12);
+      EXPECT_NEAR(Vec3d(N + 3 * k).dot(Vec3d(U + 3 * k)), 0.0, 1e-12 * Vec3d(U + 3 * k).norm());
+      // The same bits as one point at a time.
+      double x[3], xu[3], xv[3], xn[3];
+      EvalOut o{x, xu, xv, xn};
+      ASSERT_EQ(S.eval(us[i], vs[j], o), Status::ok);
+      SurfacePoint p, r;
+      p.x = Vec3d(x);
+      p.du = Vec3d(xu);
+      p.dv = Vec3d(xv);
+      p.normal = Vec3d(xn);
+      ASSERT_EQ(invert_surface_point(inv, p, true, true, true, r), Status::ok);
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(P[3 * k + a], r.x[a]);
+        EXPECT_EQ(U[3 * k + a], r.du[a]);
+        EXPECT_EQ(N[3 * k + a], r.normal[a]);
+      }
+    }
+  }
+  // All or nothing: a grid point at the center leaves the buffers untouched.
+  double x0[3];
+  EvalOut o0{x0, nullptr, nullptr, nullptr};
+  ASSERT_EQ(S.eval(0.1, 0.7, o0), Status::ok);
+  const Inversion at{Vec3d(x0), 1.0};
+  std::fill(P, P + 45, 7.0);
+  EXPECT_EQ(eval_grid_inverted(S, at, us, 3, vs, 5, {P, 3}, {}, {}, {}, nullptr),
+            Status::at_inversion_center);
+  EXPECT_TRUE(std::all_of(P, P + 45, [](double v) { return v == 7.0; }));
+  // The circle through the center maps to a line.
+  CircleOrLine line;
+  ASSERT_EQ(inverted_circle(S, at, 0.1, line), Status::ok);
+  EXPECT_TRUE(line.is_line);
 }
 
 TEST(Darboux, DcmcReportsDegenerateInput) {

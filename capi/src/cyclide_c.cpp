@@ -5,6 +5,7 @@
 #include "capi_internal.hpp"
 #include "cyclide/darboux.hpp"
 #include "cyclide/darboux_lines.hpp"
+#include "cyclide/inverted_surface.hpp"
 #include "cyclide/hermite.hpp"
 
 using namespace cyclide;
@@ -677,6 +678,50 @@ int cyc_surface_eval_inverted(cyc_context* ctx, const cyc_surface* surface,
     if (dv) put3(dv, R.dv);
     if (normal) put3(normal, R.normal);
     return ok();
+  });
+}
+
+int cyc_surface_circle_inverted(cyc_context* ctx, const cyc_surface* surface,
+                                const cyc_inversion* inv, double u, cyc_circle_or_line* out) {
+  const char* fn = "cyc_surface_circle_inverted";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(inv);
+    REQUIRE(out);
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    CircleOrLine R;
+    if (Status s = inverted_circle(surface->surface, I, u, R); s != Status::ok)
+      return from_core_at(fn, s, u);
+    out->is_line = R.is_line ? 1 : 0;
+    put3(out->point, R.point);
+    put3(out->axis, R.axis);
+    out->radius = R.radius;
+    return ok();
+  });
+}
+
+int cyc_surface_eval_grid_inverted(cyc_context* ctx, const cyc_surface* surface,
+                                   const cyc_inversion* inv, const double* us, size_t nu,
+                                   const double* vs, size_t nv, cyc_buffer3 points,
+                                   cyc_buffer3 du, cyc_buffer3 dv, cyc_buffer3 normals,
+                                   size_t* singular) {
+  const char* fn = "cyc_surface_eval_grid_inverted";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(inv);
+    if (nu) REQUIRE(us);
+    if (nv) REQUIRE(vs);
+    if (nv && nu > SIZE_MAX / nv) return fail(CYC_E_INVALID_ARGUMENT, "%s: nu*nv overflows", fn);
+    const size_t count = nu * nv;
+    for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
+                           {"du", &du}, {"dv", &dv}, {"normals", &normals}})
+      if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
+    Inversion I;
+    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    const Status s = eval_grid_inverted(surface->surface, I, us, nu, vs, nv, strided(points),
+                                        strided(du), strided(dv), strided(normals), singular);
+    return from_core(fn, s);
   });
 }
 

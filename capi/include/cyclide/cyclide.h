@@ -316,6 +316,24 @@ CYC_API int cyc_surface_eval_inverted(cyc_context* ctx, const cyc_surface* surfa
                                       double point[3], double du[3], double dv[3],
                                       double normal[3]);
 
+/** The circle at u of a surface carried through an inversion: the image of
+ *  the circle v -> x(u, v), a line when that circle passes through the
+ *  center (§5: the inverted surface is again a family of circles). */
+CYC_API int cyc_surface_circle_inverted(cyc_context* ctx, const cyc_surface* surface,
+                                        const cyc_inversion* inv, double u,
+                                        cyc_circle_or_line* out);
+/** cyc_surface_eval_grid of the surface carried through an inversion
+ *  (points, partials, normals as in cyc_surface_eval_inverted). All or
+ *  nothing: CYC_E_AT_INVERSION_CENTER (or CYC_E_NUMERICAL_OVERFLOW) if a
+ *  grid point is at the center (or its image overflows), buffers untouched.
+ *  Evaluates the grid twice (validate, then write); no allocation. */
+CYC_API int cyc_surface_eval_grid_inverted(cyc_context* ctx, const cyc_surface* surface,
+                                           const cyc_inversion* inv, const double* us,
+                                           size_t nu, const double* vs, size_t nv,
+                                           cyc_buffer3 points, cyc_buffer3 du,
+                                           cyc_buffer3 dv, cyc_buffer3 normals,
+                                           size_t* singular);
+
 /** DCMC (§6): the parabolic Darboux cyclides through three mutually
  *  non-parallel lines with a common normal n form the family
  *  base + alpha * quadric (phi0 = 0, phi1 = n.X with |n| = 1; `quadric` is
