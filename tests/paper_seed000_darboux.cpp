@@ -147,6 +147,38 @@ TEST(Darboux, TypesIncludingReducibleCases) {
   Darboux torus_like = example2();
   torus_like.k[kPhi0] = 1;
   EXPECT_EQ(darboux_type(torus_like), DarbouxType::quartic);
+  // Products of two spheres are reducible quartics (real or complex
+  // conjugate factors); a torus is not.
+  auto product = [](const GeneralSphere& s1, const GeneralSphere& s2) {
+    Darboux P;
+    const Eigen::Matrix3d B = 0.5 * (s1.B * s2.B.transpose() + s2.B * s1.B.transpose());
+    P.set(s1.A * s2.A, s1.A * s2.B + s2.A * s1.B,
+          (s1.A * s2.C + s2.A * s1.C) * Eigen::Matrix3d::Identity() + B,
+          s1.B * s2.C + s2.B * s1.C, s1.C * s2.C);
+    return P;
+  };
+  EXPECT_EQ(darboux_type(product({1, {1, -2, 0.5}, -3}, {2, {0.3, 1, -1}, 0.2})),
+            DarbouxType::reducible);
+  EXPECT_EQ(darboux_type(product({1, {0, 0, 0}, -1}, {1, {0, 0, 0}, -4})), DarbouxType::reducible);
+  EXPECT_EQ(darboux_type(product({1, {0, 0, 0}, -1}, {1, {0, 0, 0}, -1})), DarbouxType::reducible);
+  Darboux conjugate;  // (X.X)^2 + x^2 = (X.X + i x)(X.X - i x)
+  conjugate.k[kPhi0] = 1;
+  conjugate.k[kQxx] = 1;
+  EXPECT_EQ(darboux_type(conjugate), DarbouxType::reducible);
+  Darboux torus;  // (X.X + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2), R = 2, r = 1
+  torus.k[kPhi0] = 1;
+  torus.k[kQxx] = torus.k[kQyy] = 2 * 3 - 16;
+  torus.k[kQzz] = 2 * 3;
+  torus.k[kC] = 9;
+  EXPECT_EQ(darboux_type(torus), DarbouxType::quartic);
+  Darboux spindle = torus;  // a perturbed product is irreducible
+  spindle.k[kC] = 9.001;
+  EXPECT_EQ(darboux_type(product({1, {1, -2, 0.5}, -3}, {2, {0.3, 1, -1}, 0.2 + 1e-6})),
+            DarbouxType::reducible);  // still a product
+  Darboux near = product({1, {1, -2, 0.5}, -3}, {2, {0.3, 1, -1}, 0.2});
+  near.k[kC] += 1e-3;
+  EXPECT_EQ(darboux_type(near), DarbouxType::quartic);
+  EXPECT_EQ(darboux_type(spindle), DarbouxType::quartic);
   Darboux plane;
   plane.k[kBx] = 1;
   EXPECT_EQ(darboux_type(plane), DarbouxType::plane);

@@ -98,6 +98,37 @@ bool quadric_reducible(const Darboux& D) {
   return rank <= 2;
 }
 
+// A quartic is reducible iff (normalized to phi0 = 1) it is a product of two
+// spheres (S + a.X + alpha)(S + b.X + beta), S = X.X, possibly complex
+// conjugate: then l = a + b, Q = (alpha + beta) I + sym(a b^T),
+// b_lin = beta a + alpha b, c = alpha beta. With a, b = l/2 +- d:
+// M = Q - l l^T / 4 = sigma I - d d^T (sigma = alpha + beta) has a double
+// eigenvalue sigma; w = b_lin - sigma l / 2 = (beta - alpha) d lies along
+// the third eigenvector, and c = (sigma^2 - delta^2)/4 with
+// delta^2 = |w|^2 / (sigma - lambda3) (also for imaginary d).
+bool quartic_reducible(const Darboux& D) {
+  const double p0 = D.phi0();
+  const Vec3d l = D.l() / p0, b = D.b() / p0;
+  const double c = D.c() / p0;
+  const Eigen::Matrix3d M = D.Q() / p0 - 0.25 * l * l.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(M);
+  const Vec3d ev = eig.eigenvalues();
+  double size = 0;
+  for (double v : D.k) size = std::max(size, std::abs(v / p0));
+  const double tol = 1e-10 * std::max(size, 1.0) * std::max(size, 1.0);
+  // The double eigenvalue: the closer pair (ascending order).
+  const bool low = ev[1] - ev[0] <= ev[2] - ev[1];
+  if (std::abs(low ? ev[1] - ev[0] : ev[2] - ev[1]) > 1e-10 * std::max(size, 1.0)) return false;
+  const double sigma = low ? 0.5 * (ev[0] + ev[1]) : 0.5 * (ev[1] + ev[2]);
+  const double lambda3 = low ? ev[2] : ev[0];
+  const Vec3d v3 = eig.eigenvectors().col(low ? 2 : 0);
+  const Vec3d w = b - 0.5 * sigma * l;
+  if ((w - w.dot(v3) * v3).norm() > 1e-10 * std::max(size, 1.0)) return false;
+  const double gap = sigma - lambda3;
+  if (std::abs(gap) <= 1e-10 * std::max(size, 1.0)) return w.norm() <= 1e-10 * std::max(size, 1.0);
+  return std::abs(c - 0.25 * (sigma * sigma - w.squaredNorm() / gap)) <= tol;
+}
+
 }  // namespace
 
 DarbouxType darboux_type(const Darboux& D) {
@@ -105,7 +136,8 @@ DarbouxType darboux_type(const Darboux& D) {
   if (!(s > 0)) return DarbouxType::zero;
   const double q = std::max({std::abs(D.k[kQxx]), std::abs(D.k[kQyy]), std::abs(D.k[kQzz]),
                              std::abs(D.k[kQxy]), std::abs(D.k[kQxz]), std::abs(D.k[kQyz])});
-  if (!negligible(std::abs(D.phi0()), s)) return DarbouxType::quartic;
+  if (!negligible(std::abs(D.phi0()), s))
+    return quartic_reducible(D) ? DarbouxType::reducible : DarbouxType::quartic;
   if (!negligible(D.l().cwiseAbs().maxCoeff(), s))
     return parabolic_reducible(D) ? DarbouxType::reducible : DarbouxType::parabolic;
   if (!negligible(q, s)) return quadric_reducible(D) ? DarbouxType::reducible : DarbouxType::quadric;
