@@ -255,9 +255,9 @@ TEST(Prop2, TheCaseAEqualsWWWithCZeroIsDupinAsWell) {
 }
 
 TEST(Prop2, NoNormalFormInTheGivenOrderSwapsTheLines) {
-  // a = v.w / v.v = 1 with (P2 - P1).v != 0: no shift beta reaches (45);
-  // the exchanged order has a' = v.w / w.w = 1/2 and c' = 0 = ... (Dupin
-  // iff the exchanged c' = 0, a' = w'.w').
+  // a = v.w / v.v = 1 with (P2 - P1).v != 0: no shift beta reaches (45)
+  // (Prop. 2's "we can achieve" fails here); the exchanged order has
+  // a' = v.w / w.w = 1/2 = w'.w', so it is Dupin iff its c' = 0.
   const Vec3d P1(0, 0, 0), v(1, 0, 0), P2(1, 0, 1), w(1, 1, 0);
   LinesClassification C;
   ASSERT_EQ(classify_two_lines(P1, v, P2, w, C), Status::ok);
