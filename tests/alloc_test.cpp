@@ -15,6 +15,9 @@
 #include <vector>
 
 #include "cyclide/cyclide.h"
+#include "cyclide/darboux_classify.hpp"
+#include "cyclide/implicitize.hpp"
+#include "cyclide/surface.hpp"
 
 #if !defined(__GLIBC__)
 #error "alloc_test forwards to glibc's __libc_malloc family"
@@ -647,6 +650,40 @@ TEST_F(AllocFree, ParabolicLinesPencilCirclesAndSection8) {
   });
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(A.line_count, 5);
+  EXPECT_EQ(h.allocations, 0);
+  EXPECT_EQ(h.frees, 0);
+}
+
+// Core functions without a C API yet (issue 3 items 6, 7): the fit (fixed
+// 64x14 QR and 14x14 SVD) and the closed-form classification.
+TEST(AllocFreeCore, ImplicitizeAndClassify) {
+  using namespace cyclide;
+  RationalCurve l1, l2;
+  ASSERT_EQ(make_line({0, 0, 0}, {1, 0, 0}, l1), Status::ok);
+  ASSERT_EQ(make_line({0, 0, 1}, {2, 1, 0}, l2), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_prcs(l1, l2, nullptr, -0.5, 0.5, S), Status::ok);
+  Vec3d X[32];
+  for (int i = 0; i < 32; ++i) X[i] = Vec3d(std::cos(0.4 * i), std::sin(0.4 * i), 0.1 * i);
+  DarbouxFit F, G;
+  LinesClassification C;
+  Darboux N, D;
+  Vec3d s;
+  double r2 = 0;
+  int bad = 0;
+  const Heap h = measure([&] {
+    for (int r = 0; r < 3; ++r) {
+      bad += fit_darboux(S, F) != Status::ok;
+      bad += fit_darboux(X, 32, G) != Status::ok;
+      bad += classify_two_lines({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {2, 1, 0}, C) != Status::ok;
+      bad += two_lines_sphere(C.nf, 0.3, s, r2) != Status::ok;
+      bad += classify_line_two_points({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {1, 2, 1}, C) != Status::ok;
+      bad += classify_line_element({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0.3, 1, 0.7}, C) != Status::ok;
+      bad += line_element_cyclide(C.nf, N, D) != Status::ok;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_TRUE(F.is_darboux);
   EXPECT_EQ(h.allocations, 0);
   EXPECT_EQ(h.frees, 0);
 }
