@@ -629,7 +629,7 @@ TEST_F(AllocFree, DarbouxInversionAndDcmc) {
 }
 
 // The line analysis of parabolic cyclides and §8 are allocation-free too.
-TEST_F(AllocFree, ParabolicLinesPencilCirclesAndSection8) {
+TEST_F(AllocFree, ParabolicLinesSection8FitAndClassification) {
   const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
   const cyc_line ex5[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}}, {{1, 1, 1}, {-1, 2, 0}}};
   const cyc_line x_axis = {{0, 0, 0}, {1, 0, 0}};
@@ -639,6 +639,8 @@ TEST_F(AllocFree, ParabolicLinesPencilCirclesAndSection8) {
   cyc_prrs_lines_analysis P;
   cyc_darboux D;
   double residual = 1;
+  cyc_darboux_fit fit;
+  cyc_lines_classification cl;
   int bad = 0;
   const Heap h = measure([&] {
     for (int r = 0; r < kRepeat; ++r) {
@@ -646,6 +648,10 @@ TEST_F(AllocFree, ParabolicLinesPencilCirclesAndSection8) {
       bad += cyc_pencil_circle(ctx, &c39, &x_axis, side, &c) != CYC_OK;
       bad += cyc_prrs_lines_analyze(ctx, ex5, &P) != CYC_OK;
       bad += cyc_prrs_lines_cyclide(ctx, ex5, &D, &residual) != CYC_OK;
+      bad += cyc_darboux_fit_surface(ctx, prcs, &fit) != CYC_OK;
+      bad += cyc_classify_two_lines(ctx, &x_axis, &ex5[2], &cl) != CYC_OK;
+      bad += cyc_classify_line_element(ctx, &x_axis, ex5[2].point, side, &cl, &D) != CYC_OK;
+      bad += cyc_classify_line_two_points(ctx, &x_axis, ex5[2].point, side, &cl) != CYC_OK;
     }
   });
   EXPECT_EQ(bad, 0);
@@ -654,7 +660,7 @@ TEST_F(AllocFree, ParabolicLinesPencilCirclesAndSection8) {
   EXPECT_EQ(h.frees, 0);
 }
 
-// Core functions without a C API yet (issue 3 items 6, 7): the fit (fixed
+// The core functions behind cyc_darboux_fit_* and cyc_classify_* (issue 3 items 6, 7): the fit (fixed
 // 64x14 QR and 14x14 SVD) and the closed-form classification.
 TEST(AllocFreeCore, ImplicitizeAndClassify) {
   using namespace cyclide;

@@ -335,6 +335,7 @@ static const struct {
     {CYC_E_NOT_PARABOLIC, "CYC_E_NOT_PARABOLIC"},
     {CYC_E_EMPTY_REAL_LOCUS, "CYC_E_EMPTY_REAL_LOCUS"},
     {CYC_E_TOO_FEW_LINES, "CYC_E_TOO_FEW_LINES"},
+    {CYC_E_NO_NORMAL_FORM, "CYC_E_NO_NORMAL_FORM"},
     {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
     {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
     {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
@@ -345,7 +346,7 @@ static const struct {
 
 static void test_versions_and_names(void) {
   size_t i, j;
-  const int unknown[] = {-1, 6, 99, 114, 199, 201, 302, 402, 12345};
+  const int unknown[] = {-1, 6, 99, 115, 199, 201, 302, 402, 12345};
   CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
   CHECK(cyc_version_string() != NULL);
   CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
@@ -360,7 +361,8 @@ static void test_versions_and_names(void) {
         CYC_E_NOT_CANAL == 104 && CYC_E_SINGULAR_POINT == 105 && CYC_E_DEGENERATE_RINGED == 106);
   CHECK(CYC_E_PARALLEL_LINES == 107 && CYC_E_NO_COMMON_NORMAL == 108 &&
         CYC_E_RANK_DEFICIENT == 109 && CYC_E_AT_INVERSION_CENTER == 110 &&
-        CYC_E_NOT_PARABOLIC == 111 && CYC_E_EMPTY_REAL_LOCUS == 112 && CYC_E_TOO_FEW_LINES == 113);
+        CYC_E_NOT_PARABOLIC == 111 && CYC_E_EMPTY_REAL_LOCUS == 112 && CYC_E_TOO_FEW_LINES == 113 &&
+        CYC_E_NO_NORMAL_FORM == 114);
   CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
         CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
   CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2);
@@ -2129,6 +2131,80 @@ static void test_darboux_lines(cyc_context* ctx) {
   for (i = 0; i < CYC_DARBOUX_COEFFS; ++i) CHECK(fabs(D.k[i] - D.k[3] * c61.k[i]) < 1e-14);
 }
 
+/* Implicitization fit and the closed-form classification (Props. 2, 8, 9). */
+static void test_classify(cyc_context* ctx) {
+  const cyc_line l1 = {{0, 0, 0}, {1, 0, 0}}, l2 = {{0, 0, 1}, {2, 1, 0}};
+  const cyc_line crossing = {{0, 1, 0}, {2, 1, 0}};
+  const double p2[3] = {0, 0, 1}, w0[3] = {0, 1, 0}, w1[3] = {0.5, 1, 0.3};
+  const double p3[3] = {1, 2, 1}, p3_dupin[3] = {0, 0.6, 0.8}, p3_flat[3] = {1, 0, 2};
+  /* (39) and (70) with a = c = 0: -z X.X + y^2 + 2 z^2 - z. */
+  const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
+  const cyc_darboux c70 = {{0, 0, 0, -1, 0, 1, 2, 0, 0, 0, 0, 0, -1, 0}};
+  cyc_lines_classification C;
+  cyc_darboux D;
+  cyc_darboux_fit F;
+  double pts[3 * 30], value;
+  int i;
+  ex2 e;
+
+  /* Example 2 (Prop. 2 (II)); intersecting lines have no normal form. */
+  memset(&C, 0x5a, sizeof C);
+  CHECK_STATUS(ctx, cyc_classify_two_lines(ctx, &l1, &crossing, &C), CYC_E_NO_NORMAL_FORM);
+  CHECK_STATUS(ctx, cyc_classify_two_lines(ctx, &l1, NULL, &C), CYC_E_NULL_ARGUMENT);
+  CHECK(C.kind == 0x5a5a5a5a);
+  CHECK_STATUS(ctx, cyc_classify_two_lines(ctx, &l1, &l2, &C), CYC_OK);
+  CHECK(C.kind == CYC_CYCLIDE_PARABOLIC_DARBOUX && C.paper_case == 2);
+  CHECK(C.circle_families == 5 && C.double_families == 1 && !C.pn);
+  CHECK(fabs(C.a - 2) < TOL && fabs(C.b - 1) < TOL && fabs(C.c) < TOL && fabs(C.scale - 1) < TOL);
+
+  /* Prop. 8: a = c = 0 is Dupin with (70); (a, c) != 0 is case (II). */
+  fill(D.k, CYC_DARBOUX_COEFFS);
+  CHECK_STATUS(ctx, cyc_classify_line_element(ctx, &l1, l1.point, w0, &C, &D), CYC_E_NO_NORMAL_FORM);
+  CHECK(untouched(D.k, CYC_DARBOUX_COEFFS));
+  CHECK_STATUS(ctx, cyc_classify_line_element(ctx, &l1, p2, w0, &C, &D), CYC_OK);
+  CHECK(C.kind == CYC_CYCLIDE_PARABOLIC_DUPIN && C.circle_families == 2 && C.double_families == 2);
+  CHECK(C.pn == 1);
+  for (i = 0; i < CYC_DARBOUX_COEFFS; ++i) CHECK(fabs(D.k[i] * c70.k[6] - c70.k[i] * D.k[6]) < 1e-14);
+  CHECK_STATUS(ctx, cyc_classify_line_element(ctx, &l1, p2, w1, &C, NULL), CYC_OK);
+  CHECK(C.paper_case == 2 && C.circle_families == 3 && C.double_families == 1);
+  CHECK(fabs(C.a - 0.5) < TOL && fabs(C.c - 0.3) < TOL);
+
+  /* Prop. 9: Example 3 is case (II); P3 = (0, 0.6, 0.8) is Dupin. */
+  CHECK_STATUS(ctx, cyc_classify_line_two_points(ctx, &l1, p2, p3_flat, &C), CYC_E_NO_NORMAL_FORM);
+  CHECK_STATUS(ctx, cyc_classify_line_two_points(ctx, &l1, p2, p3, &C), CYC_OK);
+  CHECK(C.paper_case == 2 && C.circle_families == 3 && C.double_families == 1);
+  CHECK_STATUS(ctx, cyc_classify_line_two_points(ctx, &l1, p2, p3_dupin, &C), CYC_OK);
+  CHECK(C.kind == CYC_CYCLIDE_PARABOLIC_DUPIN && C.pn == 1);
+
+  /* The fit: Example 2's PRCS surface is (39); points on a sphere give the
+   * sphere itself with nullity > 1; too few points are refused. */
+  ex2_create(ctx, &e);
+  if (e.S) {
+    CHECK_STATUS(ctx, cyc_darboux_fit_surface(ctx, e.S, &F), CYC_OK);
+    CHECK(F.is_darboux == 1 && F.residual <= 1e-9 && F.nullity == 1);
+    for (i = 0; i < CYC_DARBOUX_COEFFS; ++i) CHECK(fabs(F.d.k[i] - c39.k[i] * F.d.k[3] / 4) < 1e-9);
+    ex2_destroy(ctx, &e);
+  }
+  for (i = 0; i < 30; ++i) {
+    const double t = 0.7 * i, z = -0.9 + 0.06 * i, r = sqrt(1 - z * z);
+    pts[3 * i] = 1 + r * cos(t);
+    pts[3 * i + 1] = r * sin(t);
+    pts[3 * i + 2] = z;
+  }
+  F.residual = SENT;
+  CHECK_STATUS(ctx, cyc_darboux_fit_points(ctx, pts, CYC_MIN_FIT_POINTS - 1, &F),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_darboux_fit_points(ctx, NULL, 30, &F), CYC_E_NULL_ARGUMENT);
+  CHECK(F.residual == SENT);
+  CHECK_STATUS(ctx, cyc_darboux_fit_points(ctx, pts, 30, &F), CYC_OK);
+  CHECK(F.is_darboux == 1 && F.nullity > 1);
+  CHECK_STATUS(ctx, cyc_darboux_eval(ctx, &F.d, pts + 30, &value, NULL), CYC_OK);
+  CHECK(fabs(value) < 1e-9);
+  CHECK(fabs(F.d.k[0]) < 1e-12 && fabs(F.d.k[1]) + fabs(F.d.k[2]) + fabs(F.d.k[3]) < 1e-9);
+  pts[3 * 29] = NAN;
+  CHECK_STATUS(ctx, cyc_darboux_fit_points(ctx, pts, 30, &F), CYC_E_NOT_FINITE);
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -2150,6 +2226,7 @@ int main(void) {
     test_construction_errors(ctx);
     test_darboux(ctx);
     test_darboux_lines(ctx);
+    test_classify(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

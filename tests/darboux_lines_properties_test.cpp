@@ -10,13 +10,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cyclide/darboux_classify.hpp"
 #include "cyclide/darboux_lines.hpp"
+#include "cyclide/implicitize.hpp"
 
 using namespace cyclide;
 
 namespace {
 
-// |F(X)| <= kOnSurfaceTol |grad F(X)| (1 + |X|): X within ~1e-8 of F.
+// |F(X)| <= kOnSurfaceTol (|grad F(X)| r + 1e-6 scale(F) r^3), r = 1 + |X|:
+// X within ~1e-8 r of F away from singular points.
 constexpr double kOnSurfaceTol = 1e-8;
 
 double dyadic(int n) { return double(n) / 64.0; }
@@ -51,21 +54,6 @@ Frame three_skew_lines() {
   return F;
 }
 
-bool on_surface(const Darboux& D, const Vec3d& X) {
-  return std::abs(D.value(X)) <= kOnSurfaceTol * D.gradient(X).norm() * (1 + X.norm());
-}
-
-int find_line(const ParabolicLines& A, const Line& L) {
-  const Vec3d d = L.d.normalized();
-  for (int i = 0; i < A.line_count; ++i) {
-    const Line& F = A.lines[i].line;
-    if (F.d.cross(d).norm() > 1e-6) continue;
-    const Vec3d w = L.P - F.P;
-    if ((w - w.dot(F.d) * F.d).norm() <= 1e-6 * (1 + L.P.norm())) return i;
-  }
-  return -1;
-}
-
 // Diagnostics for a failing case.
 void dump(const Darboux& D, const ParabolicLines& A) {
   std::printf("F:");
@@ -80,6 +68,24 @@ void dump(const Darboux& D, const ParabolicLines& A) {
     std::printf(" plane t=%.17g kind %d\n", A.planes[i].t, int(A.planes[i].kind));
 }
 
+// (The floor keeps singular points, where grad F = 0, from failing.)
+bool on_surface(const Darboux& D, const Vec3d& X) {
+  const double r = 1 + X.norm();
+  return std::abs(D.value(X)) <=
+         kOnSurfaceTol * (D.gradient(X).norm() * r + 1e-6 * D.scale() * r * r * r);
+}
+
+int find_line(const ParabolicLines& A, const Line& L) {
+  const Vec3d d = L.d.normalized();
+  for (int i = 0; i < A.line_count; ++i) {
+    const Line& F = A.lines[i].line;
+    if (F.d.cross(d).norm() > 1e-6) continue;
+    const Vec3d w = L.P - F.P;
+    if ((w - w.dot(F.d) * F.d).norm() <= 1e-6 * (1 + L.P.norm())) return i;
+  }
+  return -1;
+}
+
 Darboux normalized(Darboux D) {
   const double s = D.scale();
   for (double& v : D.k) v /= s;
@@ -91,7 +97,10 @@ void check_lines_and_circles(const Darboux& D, const ParabolicLines& A) {
   RC_ASSERT(A.line_count <= 6);  // at most six real lines (six circle families)
   for (int i = 0; i < A.line_count; ++i) {
     const Line& L = A.lines[i].line;
-    for (double s : {-1.5, 0.0, 2.0}) RC_ASSERT(on_surface(D, L.P + s * L.d));
+    for (double s : {-1.5, 0.0, 2.0}) {
+      if (!on_surface(D, L.P + s * L.d)) dump(D, A);
+      RC_ASSERT(on_surface(D, L.P + s * L.d));
+    }
     const double th = *rc::gen::inRange(5, 175) * M_PI / 180;
     const Vec3d k = A.n.cross(L.d);
     CircleOrLine c;
@@ -192,4 +201,50 @@ RC_GTEST_PROP(DarbouxLinesProperties, Prop2PrcsOfTwoLinesIsACanalCyclideWithDoub
   const Status st = parameterize_parabolic_prcs(D, -1, 1, T);
   if (st == Status::ok) check_surface_on(D, T);
   else RC_ASSERT(st == Status::dependent_planes || st == Status::zero_tangent);
+}
+
+// The closed-form classification (Props. 8, 9) and the line analysis agree
+// on the circle families: App. A through its implicit equation (70) pulled
+// back to the input, App. B through the fitted equation of the PRRS output.
+RC_GTEST_PROP(DarbouxLinesProperties, CircleCountsAgreeWithProps8And9, ()) {
+  const Eigen::Matrix3d R = random_rotation();
+  const Vec3d o(*coord(), *coord(), *coord());
+  const double s = 0.5 + std::abs(*coord());
+  // Normal forms (67)/(68) and (77), moved by X -> o + s R X.
+  const bool dupin = *rc::gen::inRange(0, 4) == 0;
+  const double a = dupin ? 0 : *coord(), c = dupin ? 0 : *coord();
+  RC_PRE(dupin || std::abs(a) + std::abs(c) >= 0.125);
+  const Vec3d P1 = o, v = s * (R * Vec3d(1, 0, 0)), P2 = o + s * (R * Vec3d(0, 0, 1));
+  LinesClassification C;
+  RC_ASSERT(classify_line_element(P1, v, P2, R * Vec3d(a, 1, c), C) == Status::ok);
+  Darboux N, D;
+  RC_ASSERT(line_element_cyclide(C.nf, N, D) == Status::ok);
+  ParabolicLines A;
+  RC_ASSERT(parabolic_lines(D, A) == Status::ok);
+  if (A.circle_families() != C.circle_families || A.double_families() != C.double_families)
+    dump(D, A);
+  RC_ASSERT(A.circle_families() == C.circle_families);
+  RC_ASSERT(A.double_families() == C.double_families);
+  check_lines_and_circles(D, A);
+
+  // Prop. 9 (P3 = (a, b, c), b != 0; Dupin for a = 0, b^2 + c^2 = 1).
+  const double th = *rc::gen::inRange(10, 170) * M_PI / 180;
+  const Vec3d P3n = dupin ? Vec3d(0, std::sin(th), std::cos(th))
+                          : Vec3d(*coord(), 0.25 + std::abs(*coord()), *coord());
+  const Vec3d P3 = o + s * (R * P3n);
+  RC_ASSERT(classify_line_two_points(P1, v, P2, P3, C) == Status::ok);
+  RationalCurve l1, p2, p3;
+  RC_ASSERT(make_line(P1, v, l1) == Status::ok);
+  RC_ASSERT(make_point(P2, p2) == Status::ok);
+  RC_ASSERT(make_point(P3, p3) == Status::ok);
+  Surface S;
+  RC_PRE(make_prrs(l1, p2, p3, nullptr, -2, 2, S) == Status::ok);
+  DarbouxFit F;
+  RC_ASSERT(fit_darboux(S, F) == Status::ok);
+  RC_ASSERT(F.is_darboux);
+  RC_ASSERT(parabolic_lines(F.D, A) == Status::ok);
+  if (A.circle_families() != C.circle_families || A.double_families() != C.double_families)
+    dump(F.D, A);
+  RC_ASSERT(A.circle_families() == C.circle_families);
+  RC_ASSERT(A.double_families() == C.double_families);
 }

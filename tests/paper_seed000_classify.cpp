@@ -281,7 +281,7 @@ TEST(Prop2, DegenerateInputs) {
   EXPECT_EQ(classify_two_lines({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {2, 0, 0}, C),
             Status::parallel_lines);
   EXPECT_EQ(classify_two_lines({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 1, 0}, C),
-            Status::invalid_argument);  // coplanar (intersecting): b = 0
+            Status::no_normal_form);  // coplanar (intersecting): b = 0
   EXPECT_EQ(classify_two_lines({0, 0, 0}, {0, 0, 0}, {0, 0, 1}, {2, 1, 0}, C),
             Status::zero_tangent);
   EXPECT_EQ(classify_two_lines({0, 0, NAN}, {1, 0, 0}, {0, 0, 1}, {2, 1, 0}, C),
@@ -356,9 +356,9 @@ TEST(AppendixA, SpineCyclideLinesAndProp8Cases) {
 TEST(AppendixA, Degenerate) {
   LinesClassification C;
   EXPECT_EQ(classify_line_element({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, C),
-            Status::invalid_argument);  // P2 on l1
+            Status::no_normal_form);  // P2 on l1
   EXPECT_EQ(classify_line_element({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {1, 0, 2}, C),
-            Status::invalid_argument);  // w in the plane of l1 and P2
+            Status::no_normal_form);  // w in the plane of l1 and P2
   EXPECT_EQ(classify_line_element({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 0, 0}, C),
             Status::zero_tangent);
 }
@@ -422,7 +422,7 @@ TEST(AppendixB, Prop9EveryCase) {
   }
   LinesClassification C;
   EXPECT_EQ(classify_line_two_points({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {3, 0, 2}, C),
-            Status::invalid_argument);  // coplanar: b = 0
+            Status::no_normal_form);  // coplanar: b = 0
 }
 
 // ---------------------------------------------------------------- the fit

@@ -129,6 +129,8 @@ inline const char* explain(Status s) {
     case Status::empty_real_locus: return "the requested real circle or surface is empty";
     case Status::too_few_lines:
       return "the cyclide lacks the lines Props. 3/5 need (a double line, three skew lines)";
+    case Status::no_normal_form:
+      return "the input has no normal form of Props. 2/8/9 (lines or points coplanar)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -6,6 +6,8 @@
 #include "cyclide/darboux.hpp"
 #include "cyclide/darboux_lines.hpp"
 #include "cyclide/inverted_surface.hpp"
+#include "cyclide/implicitize.hpp"
+#include "cyclide/darboux_classify.hpp"
 #include "cyclide/hermite.hpp"
 
 using namespace cyclide;
@@ -32,6 +34,7 @@ CYC_SAME(CYC_E_AT_INVERSION_CENTER, at_inversion_center);
 CYC_SAME(CYC_E_NOT_PARABOLIC, not_parabolic);
 CYC_SAME(CYC_E_EMPTY_REAL_LOCUS, empty_real_locus);
 CYC_SAME(CYC_E_TOO_FEW_LINES, too_few_lines);
+CYC_SAME(CYC_E_NO_NORMAL_FORM, no_normal_form);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
@@ -59,7 +62,7 @@ const char* cyc_status_name(int status) {
     case CYC_E_SINGULAR_POINT: case CYC_E_DEGENERATE_RINGED:
     case CYC_E_PARALLEL_LINES: case CYC_E_NO_COMMON_NORMAL: case CYC_E_RANK_DEFICIENT:
     case CYC_E_AT_INVERSION_CENTER: case CYC_E_NOT_PARABOLIC: case CYC_E_EMPTY_REAL_LOCUS:
-    case CYC_E_TOO_FEW_LINES:
+    case CYC_E_TOO_FEW_LINES: case CYC_E_NO_NORMAL_FORM:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));
@@ -739,6 +742,133 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
     if (normal) put3(normal, F.n);
     put_darboux(base, F.base);
     put_darboux(quadric, F.quadric);
+    return ok();
+  });
+}
+
+// ------------------------------------------------------------ fit and classification
+
+static_assert(CYC_MIN_FIT_POINTS == kMinFitPoints && CYC_MAX_FIT_POINTS == kMaxFitPoints,
+              "fit bounds");
+
+namespace {
+void put_fit(cyc_darboux_fit& out, const DarbouxFit& F) {
+  put_darboux(&out.d, F.D);
+  out.residual = F.residual;
+  out.sigma_ratio = F.sigma_ratio;
+  out.nullity = F.nullity;
+  out.points = F.points;
+  out.is_darboux = F.is_darboux ? 1 : 0;
+}
+void put_classification(cyc_lines_classification& out, const LinesClassification& C) {
+  cyc_lines_classification R;
+  std::memset(&R, 0, sizeof R);
+  R.kind = int(C.kind);
+  R.paper_case = C.paper_case;
+  R.circle_families = C.circle_families;
+  R.double_families = C.double_families;
+  R.pn = C.pn ? 1 : 0;
+  R.swapped = C.nf.swapped ? 1 : 0;
+  R.a = C.nf.a;
+  R.b = C.nf.b;
+  R.c = C.nf.c;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) R.rotation[3 * i + j] = C.nf.T.R(i, j);
+  R.scale = C.nf.T.scale;
+  put3(R.origin, C.nf.T.origin);
+  R.alpha = C.nf.alpha;
+  R.beta = C.nf.beta;
+  out = R;
+}
+}  // namespace
+
+int cyc_darboux_fit_points(cyc_context* ctx, const double* points, int count,
+                           cyc_darboux_fit* out) {
+  const char* fn = "cyc_darboux_fit_points";
+  return run(ctx, fn, [&] {
+    REQUIRE(points);
+    REQUIRE(out);
+    if (count < kMinFitPoints || count > kMaxFitPoints)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: count %d not in [%d, %d]", fn, count,
+                  kMinFitPoints, kMaxFitPoints);
+    Vec3d X[kMaxFitPoints];
+    for (int i = 0; i < count; ++i) X[i] = vec(points + 3 * i);
+    DarbouxFit F;
+    const Status s = fit_darboux(X, count, F);
+    if (s == Status::invalid_argument) return fail(int(s), "%s: all points are equal", fn);
+    if (s != Status::ok) return from_core(fn, s);
+    put_fit(*out, F);
+    return ok();
+  });
+}
+
+int cyc_darboux_fit_surface(cyc_context* ctx, const cyc_surface* surface, cyc_darboux_fit* out) {
+  const char* fn = "cyc_darboux_fit_surface";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    DarbouxFit F;
+    const Status s = fit_darboux(surface->surface, F);
+    if (s == Status::invalid_argument)
+      return fail(int(s), "%s: too few samples of the surface could be evaluated", fn);
+    if (s != Status::ok) return from_core(fn, s);
+    put_fit(*out, F);
+    return ok();
+  });
+}
+
+int cyc_classify_two_lines(cyc_context* ctx, const cyc_line* l1, const cyc_line* l2,
+                           cyc_lines_classification* out) {
+  const char* fn = "cyc_classify_two_lines";
+  return run(ctx, fn, [&] {
+    REQUIRE(l1);
+    REQUIRE(l2);
+    REQUIRE(out);
+    LinesClassification C;
+    if (Status s = classify_two_lines(vec(l1->point), vec(l1->direction), vec(l2->point),
+                                      vec(l2->direction), C);
+        s != Status::ok)
+      return from_core(fn, s);
+    put_classification(*out, C);
+    return ok();
+  });
+}
+
+int cyc_classify_line_element(cyc_context* ctx, const cyc_line* l1, const double p2[3],
+                              const double w[3], cyc_lines_classification* out,
+                              cyc_darboux* implicit) {
+  const char* fn = "cyc_classify_line_element";
+  return run(ctx, fn, [&] {
+    REQUIRE(l1);
+    REQUIRE(p2);
+    REQUIRE(w);
+    REQUIRE(out);
+    LinesClassification C;
+    if (Status s = classify_line_element(vec(l1->point), vec(l1->direction), vec(p2), vec(w), C);
+        s != Status::ok)
+      return from_core(fn, s);
+    Darboux N, D;
+    if (implicit)
+      if (Status s = line_element_cyclide(C.nf, N, D); s != Status::ok) return from_core(fn, s);
+    put_classification(*out, C);
+    if (implicit) put_darboux(implicit, D);
+    return ok();
+  });
+}
+
+int cyc_classify_line_two_points(cyc_context* ctx, const cyc_line* l1, const double p2[3],
+                                 const double p3[3], cyc_lines_classification* out) {
+  const char* fn = "cyc_classify_line_two_points";
+  return run(ctx, fn, [&] {
+    REQUIRE(l1);
+    REQUIRE(p2);
+    REQUIRE(p3);
+    REQUIRE(out);
+    LinesClassification C;
+    if (Status s = classify_line_two_points(vec(l1->point), vec(l1->direction), vec(p2), vec(p3), C);
+        s != Status::ok)
+      return from_core(fn, s);
+    put_classification(*out, C);
     return ok();
   });
 }

@@ -62,7 +62,7 @@ struct LinesClassification {
 };
 
 // Prop. 2: PRCS of l1 = P1 + u v and l2 = P2 + u w. Statuses: not_finite,
-// zero_tangent (v or w = 0), parallel_lines, invalid_argument (no normal form: the lines
+// zero_tangent (v or w = 0), parallel_lines, no_normal_form (the lines
 // intersect: coplanar, b = 0). Where (45) needs a = 1 with (P2 - P1).v != 0
 // (no normal form in the given order) the lines are exchanged (PRCS is
 // symmetric in p1, p2) and nf.swapped is set. Case (I) also covers
@@ -71,11 +71,11 @@ Status classify_two_lines(const Vec3d& P1, const Vec3d& v, const Vec3d& P2, cons
                           LinesClassification& out);
 // Prop. 8 (ERRATA: (II) is (a, c) != (0, 0)): PRCS of l1 = P1 + u v and the
 // line element (P2, w). Statuses: not_finite, zero_tangent (v or w = 0),
-// invalid_argument (no normal form: P2 on l1, or w in the plane of l1 and P2).
+// no_normal_form ( P2 on l1, or w in the plane of l1 and P2).
 Status classify_line_element(const Vec3d& P1, const Vec3d& v, const Vec3d& P2, const Vec3d& w,
                              LinesClassification& out);
 // Prop. 9: PRRS of l1 = P1 + u v and the points P2, P3. Statuses:
-// not_finite, zero_tangent (v = 0), invalid_argument (no normal form: line and points in one
+// not_finite, zero_tangent (v = 0), no_normal_form ( line and points in one
 // plane).
 Status classify_line_two_points(const Vec3d& P1, const Vec3d& v, const Vec3d& P2,
                                 const Vec3d& P3, LinesClassification& out);

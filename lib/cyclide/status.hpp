@@ -28,6 +28,7 @@ enum class Status : int {
   not_parabolic = 111,      // a query for parabolic (cubic, irreducible) cyclides only
   empty_real_locus = 112,   // the requested real object (circle, surface) is empty
   too_few_lines = 113,      // Props. 3, 5: the cyclide lacks the lines they need
+  no_normal_form = 114,     // Props. 2, 8, 9: the input has no normal form (coplanar, ...)
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

@@ -107,10 +107,10 @@ Status classify_two_lines(const Vec3d& P1, const Vec3d& v, const Vec3d& P2, cons
   if (n.norm() <= kClassifyTol * v.norm() * w.norm()) return Status::parallel_lines;
   // Skew: (P2 - P1).(v x w) != 0; otherwise b = 0 in (45).
   if (std::abs((P2 - P1).dot(n)) <= kClassifyTol * (P2 - P1).norm() * n.norm())
-    return Status::invalid_argument;
+    return Status::no_normal_form;
   LinesClassification C;
   if (!two_lines_normal_form(P1, v, P2, w, C.nf)) {
-    if (!two_lines_normal_form(P2, w, P1, v, C.nf)) return Status::invalid_argument;
+    if (!two_lines_normal_form(P2, w, P1, v, C.nf)) return Status::no_normal_form;
     C.nf.swapped = true;
   }
   const double a = C.nf.a, c = C.nf.c;
@@ -135,11 +135,11 @@ Status classify_line_element(const Vec3d& P1, const Vec3d& v, const Vec3d& P2, c
   if (!input_ok(P1) || !input_ok(v) || !input_ok(P2) || !input_ok(w)) return Status::not_finite;
   if (zero(v) || zero(w)) return Status::zero_tangent;
   LinesClassification C;
-  if (!point_normal_form(P1, v, P2, C.nf)) return Status::invalid_argument;
+  if (!point_normal_form(P1, v, P2, C.nf)) return Status::no_normal_form;
   // (68): w in the normal frame, scaled to y-component 1 (w independent
   // of e1, e3).
   const Vec3d wn = C.nf.T.R * w;
-  if (!(std::abs(wn.y()) > kClassifyTol * w.norm())) return Status::invalid_argument;
+  if (!(std::abs(wn.y()) > kClassifyTol * w.norm())) return Status::no_normal_form;
   C.nf.a = wn.x() / wn.y();
   C.nf.b = 1;
   C.nf.c = wn.z() / wn.y();
@@ -156,10 +156,10 @@ Status classify_line_two_points(const Vec3d& P1, const Vec3d& v, const Vec3d& P2
   if (!input_ok(P1) || !input_ok(v) || !input_ok(P2) || !input_ok(P3)) return Status::not_finite;
   if (zero(v)) return Status::zero_tangent;
   LinesClassification C;
-  if (!point_normal_form(P1, v, P2, C.nf)) return Status::invalid_argument;
+  if (!point_normal_form(P1, v, P2, C.nf)) return Status::no_normal_form;
   const Vec3d P = C.nf.T.apply(P3);  // (77)
   const double m = std::max(1.0, P.norm());
-  if (!(std::abs(P.y()) > kClassifyTol * m)) return Status::invalid_argument;
+  if (!(std::abs(P.y()) > kClassifyTol * m)) return Status::no_normal_form;
   C.nf.a = P.x();
   C.nf.b = P.y();
   C.nf.c = P.z();

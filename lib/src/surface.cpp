@@ -499,6 +499,7 @@ const char* status_name(Status s) noexcept {
     case Status::not_parabolic: return "CYC_E_NOT_PARABOLIC";
     case Status::empty_real_locus: return "CYC_E_EMPTY_REAL_LOCUS";
     case Status::too_few_lines: return "CYC_E_TOO_FEW_LINES";
+    case Status::no_normal_form: return "CYC_E_NO_NORMAL_FORM";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

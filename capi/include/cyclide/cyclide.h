@@ -433,6 +433,77 @@ CYC_API int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
 CYC_API int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darboux* out,
                                    double* residual);
 
+/* ------------- implicitization and classification (seed 000 §7, App. A, B) */
+
+/** Bounds of cyc_darboux_fit_points (frozen). */
+#define CYC_MIN_FIT_POINTS 20
+#define CYC_MAX_FIT_POINTS 64
+
+/** The Darboux cyclide (31) through sample points (frozen). */
+typedef struct cyc_darboux_fit {
+  cyc_darboux d;      /* normalized: largest |k| = 1, first |k| > 1e-6 positive */
+  double residual;    /* max |F|/max(|grad F|, 1e-3) over the samples, relative
+                         to the sample box diagonal (a distance estimate) */
+  double sigma_ratio; /* smallest / largest singular value of the system */
+  int nullity;        /* equations through the points (> 1: sphere or plane;
+                         d is then the lowest-degree one) */
+  int points;         /* samples used */
+  int is_darboux;     /* residual <= 1e-9 */
+} cyc_darboux_fit;
+
+/** Fit (31) through `count` points (x, y, z consecutive), count in
+ *  [CYC_MIN_FIT_POINTS, CYC_MAX_FIT_POINTS]. */
+CYC_API int cyc_darboux_fit_points(cyc_context* ctx, const double* points, int count,
+                                   cyc_darboux_fit* out);
+/** Fit (31) through 8 x 8 samples of a surface: confirms that a PRCS/PRRS
+ *  output is a Darboux cyclide (is_darboux) and gives its equation. */
+CYC_API int cyc_darboux_fit_surface(cyc_context* ctx, const cyc_surface* surface,
+                                    cyc_darboux_fit* out);
+
+/** What Props. 2, 8, 9 say PRCS/PRRS of the simplest inputs produce (frozen). */
+enum cyc_cyclide_kind {
+  CYC_CYCLIDE_HYPERBOLOID = 1,        /* Prop. 2 with w.w = 1 */
+  CYC_CYCLIDE_PARABOLIC_DARBOUX = 2,  /* case (II) */
+  CYC_CYCLIDE_PARABOLIC_DUPIN = 3     /* case (I): PN parameterization */
+};
+
+/** The closed-form classification and the normal form (frozen): the input
+ *  moved by X' = scale R (X - origin) (R row-major, a rotation) and
+ *  reparameterized by u = alpha u' + beta is the paper's normal form (45),
+ *  (67)/(68) or (77) with parameters a, b, c. */
+typedef struct cyc_lines_classification {
+  int kind;            /* enum cyc_cyclide_kind */
+  int paper_case;      /* 1 = (I), 2 = (II), 0 = hyperboloid */
+  int circle_families; /* distinct real families (0 for the hyperboloid) */
+  int double_families; /* of which of multiplicity two */
+  int pn;              /* the PRCS/PRRS parameterization is PN */
+  int swapped;         /* two lines: l1, l2 exchanged to reach (45) */
+  double a, b, c;
+  double rotation[9];
+  double scale;
+  double origin[3];
+  double alpha, beta;
+} cyc_lines_classification;
+
+/** Prop. 2: PRCS of two lines l_i(u) = point + u direction. Case (I) also
+ *  covers c = 0, a = w.w (l1 double), which the paper misses (SPEC §12b).
+ *  CYC_E_PARALLEL_LINES, CYC_E_ZERO_TANGENT, CYC_E_NO_NORMAL_FORM (the lines
+ *  intersect). */
+CYC_API int cyc_classify_two_lines(cyc_context* ctx, const cyc_line* l1, const cyc_line* l2,
+                                   cyc_lines_classification* out);
+/** Prop. 8 (App. A): PRCS of a line and the line element (p2, w); the
+ *  implicit equation (70) in the input coordinates is written to
+ *  `implicit` (may be NULL). CYC_E_NO_NORMAL_FORM if p2 is on the line or
+ *  w in the plane of the line and p2. */
+CYC_API int cyc_classify_line_element(cyc_context* ctx, const cyc_line* l1, const double p2[3],
+                                      const double w[3], cyc_lines_classification* out,
+                                      cyc_darboux* implicit);
+/** Prop. 9 (App. B): PRRS of a line and the points p2, p3.
+ *  CYC_E_NO_NORMAL_FORM if they lie in one plane. */
+CYC_API int cyc_classify_line_two_points(cyc_context* ctx, const cyc_line* l1,
+                                         const double p2[3], const double p3[3],
+                                         cyc_lines_classification* out);
+
 /* ------------------------------------------------------------ optimizer */
 
 /** 1 if this build includes the Ceres-based optimizer tier, else 0. The
