@@ -199,6 +199,183 @@ static void time_grid(cyc_context* ctx, const cyc_surface* s, FILE* report) {
           secs * 1e3, secs > 0 ? G * G / secs / 1e6 : 0.0);
 }
 
+/* ---- Darboux cyclides (seed 000 §5-8): implicit equations as cyc_darboux. */
+
+static cyc_context* g_ctx;
+static const cyc_darboux* g_implicit;
+static double eq_darboux(const double p[3]) {
+  double v = 0;
+  check(g_ctx, cyc_darboux_eval(g_ctx, g_implicit, p, &v, NULL), "cyc_darboux_eval");
+  return v;
+}
+
+static const char* section_name(int kind) {
+  switch (kind) {
+    case CYC_SECTION_LINE_PAIR: return "line pair";
+    case CYC_SECTION_DOUBLE_LINE: return "double line";
+    case CYC_SECTION_IMAGINARY_PAIR: return "imaginary pair";
+    default: return "line and l0";
+  }
+}
+
+/* Report the lines and circle families; write the lines as OBJ polylines. */
+static void report_lines(cyc_context* ctx, const cyc_darboux* d, const char* dir,
+                         const char* name, FILE* report) {
+  cyc_cyclide_lines A;
+  char file[256];
+  FILE* f;
+  int i, k;
+  check(ctx, cyc_parabolic_lines(ctx, d, &A), "cyc_parabolic_lines");
+  fprintf(report, "  l0 = line at infinity of the planes n.X = t, n = (%g, %g, %g)\n", A.normal[0],
+          A.normal[1], A.normal[2]);
+  for (i = 0; i < A.plane_count; ++i)
+    fprintf(report, "  plane n.X = %-8.4g: %s\n", A.plane_t[i], section_name(A.plane_kind[i]));
+  for (i = 0; i < A.line_count; ++i)
+    fprintf(report, "  line %d: (%.4g, %.4g, %.4g) + s (%.4f, %.4f, %.4f)%s\n", i + 1,
+            A.lines[i].point[0], A.lines[i].point[1], A.lines[i].point[2],
+            A.lines[i].direction[0], A.lines[i].direction[1], A.lines[i].direction[2],
+            A.lines[i].multiplicity == 2 ? "  (double)" : "");
+  fprintf(report, "  %d real lines -> %d families of real circles, %d of multiplicity two%s\n",
+          A.line_count, A.circle_families, A.double_families,
+          A.double_families >= 2 ? " (Dupin)" : A.double_families == 1 ? " (canal)" : "");
+  snprintf(file, sizeof file, "%s_lines.obj", name);
+  f = open_out(dir, file);
+  for (i = 0; i < A.line_count; ++i) {
+    fprintf(f, "o line%d\n", i + 1);
+    for (k = -1; k <= 1; k += 2)
+      fprintf(f, "v %.9g %.9g %.9g\n", A.lines[i].point[0] + 2.5 * k * A.lines[i].direction[0],
+              A.lines[i].point[1] + 2.5 * k * A.lines[i].direction[1],
+              A.lines[i].point[2] + 2.5 * k * A.lines[i].direction[2]);
+    fprintf(f, "l %d %d\n", 2 * i + 1, 2 * i + 2);
+  }
+  fclose(f);
+  fprintf(report, "  wrote %s/%s\n", dir, file);
+}
+
+/* A surface carried through an inversion, meshed on the base surface's
+ * uniform circle parameters; the residual is that of the inverted equation. */
+static void write_inverted(cyc_context* ctx, const cyc_surface* s, const cyc_inversion* inv,
+                           const cyc_darboux* implicit, const char* dir, const char* name,
+                           FILE* report) {
+  static double pts[NU * NV * 3], nrm[NU * NV * 3];
+  double u0, u1, vs[NV], worst = 0, g[3], v;
+  cyc_buffer3 P = {NULL, NV, 3}, N = {NULL, NV, 3}, none = {NULL, 0, 3};
+  char file[256];
+  FILE* f;
+  int i, j;
+  check(ctx, cyc_surface_domain(ctx, s, &u0, &u1), "cyc_surface_domain");
+  for (i = 0; i < NU; ++i) {
+    const double u = u0 + (u1 - u0) * i / (NU - 1);
+    circle_parameters(ctx, s, u, vs);
+    P.data = pts + 3 * NV * i;
+    N.data = nrm + 3 * NV * i;
+    check(ctx, cyc_surface_eval_grid_inverted(ctx, s, inv, &u, 1, vs, NV, P, none, none, N, NULL),
+          "cyc_surface_eval_grid_inverted");
+  }
+  for (i = 0; i < NU * NV; ++i) {
+    check(ctx, cyc_darboux_eval(ctx, implicit, pts + 3 * i, &v, g), "cyc_darboux_eval");
+    v = fabs(v) / sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (v > worst) worst = v;
+  }
+  fprintf(report, "  inverted mesh: largest |F|/|grad F| on %d points: %.2e\n", NU * NV, worst);
+  snprintf(file, sizeof file, "%s.obj", name);
+  f = open_out(dir, file);
+  fprintf(f, "# cyclide demo: %s, %d circles x %d points\n", name, NU, NV);
+  for (i = 0; i < NU * NV; ++i)
+    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
+  for (i = 0; i < NU * NV; ++i)
+    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+  for (i = 0; i + 1 < NU; ++i)
+    for (j = 0; j < NV; ++j) {
+      const int a = i * NV + j + 1, b = i * NV + (j + 1) % NV + 1;
+      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, b + NV, b + NV, a + NV, a + NV);
+    }
+  fclose(f);
+  fprintf(report, "  wrote %s/%s\n", dir, file);
+}
+
+static void darboux_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  /* (39), (61) and (35) with alpha = 0 as equations. */
+  const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
+  const cyc_darboux c61 = {{0, 0, 0, 1, 0, -1, -3.25, 0.5, -0.5, 0.5, 0, 0, 0.75, 0}};
+  const cyc_darboux c35 = {{0, 0, 0, 1, 0, -1, -3, -3, 0, 0, 0, 0, 2, 0}};
+  const cyc_line l1 = {{0, 0, 0}, {1, 0, 0}}, l2 = {{0, 0, 1}, {2, 1, 0}};
+  const cyc_line ex5[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}}, {{1, 1, 1}, {-2, 4, 0}}};
+  const cyc_inversion inv = {{0.5, -0.4, 3.0}, 2.0};
+  cyc_lines_classification C;
+  cyc_prrs_lines_analysis P;
+  cyc_darboux_fit F;
+  cyc_darboux img, D;
+  cyc_surface* s;
+  cyc_line in[3];
+  double residual;
+  int type;
+  g_ctx = ctx;
+
+  fprintf(report, "\n== Darboux cyclides (seed 000 §5-8)\n");
+  fprintf(report, "\nExample 2 continued: the cyclide (39) from its equation\n");
+  check(ctx, cyc_classify_two_lines(ctx, &l1, &l2, &C), "cyc_classify_two_lines");
+  fprintf(report, "  Prop. 2 for PRCS(l1, l2): case (%s), normal form w = (%g, %g, %g): %d families, "
+          "%d double\n", C.paper_case == 1 ? "I" : "II", C.a, C.b, C.c, C.circle_families,
+          C.double_families);
+  report_lines(ctx, &c39, dir, "darboux_eq39", report);
+  check(ctx, cyc_parabolic_parameterize(ctx, &c39, CYC_SURFACE_PRCS, -2, 2, in, &s),
+        "cyc_parabolic_parameterize");
+  fprintf(report, "  Prop. 3: PRCS of (%g,%g,%g)+u(%g,%g,%g) and (%g,%g,%g)+u(%g,%g,%g), "
+          "u in [-2, 2] (pencil through the double line)\n", in[0].point[0], in[0].point[1],
+          in[0].point[2], in[0].direction[0], in[0].direction[1], in[0].direction[2],
+          in[1].point[0], in[1].point[1], in[1].point[2], in[1].direction[0],
+          in[1].direction[1], in[1].direction[2]);
+  check(ctx, cyc_darboux_fit_surface(ctx, s, &F), "cyc_darboux_fit_surface");
+  fprintf(report, "  implicitization check of the parameterization: residual %.1e (%s)\n",
+          F.residual, F.is_darboux ? "a Darboux cyclide" : "not a Darboux cyclide");
+  report_canal(ctx, s, report);
+  g_implicit = &c39;
+  write_surface(ctx, s, dir, "darboux_eq39_prop3", eq_darboux, report);
+  cyc_surface_destroy(ctx, s);
+
+  fprintf(report, "\nExample 5 (§8): PRRS of l1 = (u,0,0), l2 = (2u,u,0), l3 = (1-2u,1+4u,1)\n");
+  check(ctx, cyc_prrs_lines_analyze(ctx, ex5, &P), "cyc_prrs_lines_analyze");
+  fprintf(report, "  (55) = %g (pencil: %s), (56) = %g (cyclide: %s), mu = %g   [(58): 1/2]\n",
+          P.cond55, P.pencil ? "yes" : "no", P.cond56, P.cyclide ? "yes" : "no", P.mu);
+  {
+    cyc_line hat[3];
+    int k;
+    memcpy(hat, ex5, sizeof hat);
+    for (k = 0; k < 3; ++k) hat[2].direction[k] *= P.mu;
+    check(ctx, cyc_prrs_lines_analyze(ctx, hat, &P), "cyc_prrs_lines_analyze");
+    fprintf(report, "  with mu d3: (56) = %g; l4 = (%g,%g,%g) + s (%.4f,%.4f,%.4f)   [(59): (u,u,1/4)]\n",
+            P.cond56, P.l4.point[0], P.l4.point[1], P.l4.point[2], P.l4.direction[0],
+            P.l4.direction[1], P.l4.direction[2]);
+    check(ctx, cyc_prrs_lines_cyclide(ctx, hat, &D, &residual), "cyc_prrs_lines_cyclide");
+    fprintf(report, "  DCMC(l1, l3, l4) member through l2 (residual %.1e), scaled to z X.X:\n   ",
+            residual);
+    for (k = 0; k < CYC_DARBOUX_COEFFS; ++k) fprintf(report, " %g", D.k[k] / D.k[3]);
+    fprintf(report, "\n   [(61): 0 0 0 1 0 -1 -3.25 0.5 -0.5 0.5 0 0 0.75 0]\n");
+  }
+  report_lines(ctx, &c61, dir, "darboux_eq61", report);
+  check(ctx, cyc_parabolic_parameterize(ctx, &c61, CYC_SURFACE_PRRS, -2, 2, in, &s),
+        "cyc_parabolic_parameterize");
+  fprintf(report, "  Prop. 5: PRRS from the pencil through a line, u in [-2, 2]\n");
+  g_implicit = &c61;
+  write_surface(ctx, s, dir, "darboux_eq61_prop5", eq_darboux, report);
+  cyc_surface_destroy(ctx, s);
+
+  fprintf(report, "\nExample 4 (alpha = 0) and its inversion: six real families of circles\n");
+  report_lines(ctx, &c35, dir, "darboux_eq35", report);
+  check(ctx, cyc_invert_darboux(ctx, &inv, &c35, &img), "cyc_invert_darboux");
+  check(ctx, cyc_darboux_classify(ctx, &img, &type), "cyc_darboux_classify");
+  fprintf(report, "  inverted at center (%g, %g, %g), radius %g: type %s; the six lines become "
+          "circles through the center\n", inv.center[0], inv.center[1], inv.center[2], inv.radius,
+          type == CYC_DARBOUX_QUARTIC ? "quartic" : "other");
+  /* u = 0 is the pencil plane through the z-axis, where every line pair of
+   * (36)-(38) meets: PRRS points coincide there, so the domain avoids it. */
+  check(ctx, cyc_parabolic_parameterize(ctx, &c35, CYC_SURFACE_PRRS, 0.15, 4, in, &s),
+        "cyc_parabolic_parameterize");
+  write_inverted(ctx, s, &inv, &img, dir, "darboux_eq35_inverted", report);
+  cyc_surface_destroy(ctx, s);
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -215,7 +392,7 @@ int main(int argc, char** argv) {
     perror(path);
     return 1;
   }
-  fprintf(report, "cyclide %s (ABI %d) demo: seed 000 Examples 2, 3 and 5\n\n",
+  fprintf(report, "cyclide %s (ABI %d) demo: seed 000 Examples 2, 3, 5 and Darboux cyclides\n\n",
           cyc_version_string(), cyc_abi_version());
 
   /* Example 2 (21)-(23): PRCS of two lines -> a parabolic Darboux cyclide. */
@@ -287,6 +464,7 @@ int main(int argc, char** argv) {
   }
 
   cyc_curve_destroy(ctx, l1);
+  darboux_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

@@ -109,7 +109,11 @@ Status prcs_input_from_lines(const ParabolicLines& A, PencilInput& out);
 Status prrs_input_from_lines(const ParabolicLines& A, PencilInput& out);
 
 // Parameterize the parabolic cyclide D over u in [u0, u1] (f = v) whose
-// circles are cut by the pencil of the chosen axis.
+// circles are cut by the pencil of the chosen axis. Candidates (axis and
+// lines) are tried in order until PRCS/PRRS is regular on the whole domain:
+// a pencil plane through the common point of two input lines (PRRS points
+// coincide there) or with parallel normal planes (PRCS) fails a candidate;
+// if all fail, the first failure's status is returned.
 Status parameterize_parabolic_prcs(const Darboux& D, double u0, double u1, Surface& out,
                                    PencilInput* input = nullptr);
 Status parameterize_parabolic_prrs(const Darboux& D, double u0, double u1, Surface& out,

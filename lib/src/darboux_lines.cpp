@@ -409,11 +409,11 @@ Status build_input(const ParabolicLines& A, int axis, const int* used, int count
   return Status::ok;
 }
 
-}  // namespace
 
-// Prop. 3: a double line as axis, two more lines skew to it and each other.
-Status prcs_input_from_lines(const ParabolicLines& A, PencilInput& out) {
-  if (A.double_families() == 0) return Status::not_canal;
+// The candidate inputs of Prop. 3: a double line as axis, two more lines
+// skew to it and to each other. visit(axis, used, count) returns true to stop.
+template <class Visit>
+void for_each_prcs_input(const ParabolicLines& A, Visit visit) {
   for (int a = 0; a < A.line_count; ++a) {
     if (A.lines[a].multiplicity != 2) continue;
     for (int i = 0; i < A.line_count; ++i)
@@ -421,16 +421,16 @@ Status prcs_input_from_lines(const ParabolicLines& A, PencilInput& out) {
         const CyclideLine &L0 = A.lines[a], &Li = A.lines[i], &Lj = A.lines[j];
         if (i == a || j == a || !skew(L0, Li) || !skew(L0, Lj) || !skew(Li, Lj)) continue;
         const int used[2] = {i, j};
-        return build_input(A, a, used, 2, out);
+        if (visit(a, used, 2)) return;
       }
   }
-  return Status::too_few_lines;
 }
 
-// Prop. 5: an axis and three lines outside its plane, not all in one plane
-// and not parallel to the axis (the "additional line" shares a plane with
-// one of the others).
-Status prrs_input_from_lines(const ParabolicLines& A, PencilInput& out) {
+// The candidate inputs of Prop. 5: an axis and three lines outside its
+// plane, not all in one plane and not parallel to the axis (the
+// "additional line" shares a plane with one of the others).
+template <class Visit>
+void for_each_prrs_input(const ParabolicLines& A, Visit visit) {
   const int n = A.line_count;
   for (int a = 0; a < n; ++a)
     for (int i = 0; i < n; ++i)
@@ -442,30 +442,68 @@ Status prrs_input_from_lines(const ParabolicLines& A, PencilInput& out) {
           for (int m : idx) ok = ok && m != a && !same_plane(L0, A.lines[m]) && !parallel(L0, A.lines[m]);
           if (!ok) continue;
           if (same_plane(A.lines[i], A.lines[j]) && same_plane(A.lines[j], A.lines[k])) continue;
-          return build_input(A, a, idx, 3, out);
+          if (visit(a, idx, 3)) return;
         }
-  return Status::too_few_lines;
+}
+
+Status first_input(const ParabolicLines& A, bool canal, PencilInput& out) {
+  Status st = Status::too_few_lines;
+  auto take = [&](int a, const int* used, int count) {
+    st = build_input(A, a, used, count, out);
+    return st == Status::ok;
+  };
+  if (canal) for_each_prcs_input(A, take);
+  else for_each_prrs_input(A, take);
+  return st;
+}
+
+}  // namespace
+
+Status prcs_input_from_lines(const ParabolicLines& A, PencilInput& out) {
+  if (A.double_families() == 0) return Status::not_canal;
+  return first_input(A, true, out);
+}
+
+Status prrs_input_from_lines(const ParabolicLines& A, PencilInput& out) {
+  return first_input(A, false, out);
 }
 
 namespace {
 
+// Props. 3, 5 over [u0, u1]: the first candidate input whose PRCS/PRRS is
+// regular on the whole domain (a pencil plane through the common point of
+// two input lines, or parallel normal planes, make a candidate fail there;
+// another axis or other lines avoid it). Otherwise the first failure.
 Status parameterize(const Darboux& D, bool canal, double u0, double u1, Surface& out,
                     PencilInput* input) {
   ParabolicLines A;
   if (Status st = parabolic_lines(D, A); st != Status::ok) return st;
-  PencilInput I;
-  if (Status st = canal ? prcs_input_from_lines(A, I) : prrs_input_from_lines(A, I); st != Status::ok)
-    return st;
-  RationalCurve c[3];
-  for (int j = 0; j < I.count; ++j)
-    if (Status st = make_line(I.curves[j].P, I.curves[j].d, c[j]); st != Status::ok) return st;
-  Surface S;
-  const Status st = canal ? make_prcs(c[0], c[1], nullptr, u0, u1, S)
-                          : make_prrs(c[0], c[1], c[2], nullptr, u0, u1, S);
-  if (st != Status::ok) return st;
-  out = S;
-  if (input) *input = I;
-  return Status::ok;
+  if (canal && A.double_families() == 0) return Status::not_canal;
+  Status first = Status::too_few_lines;
+  bool tried = false, success = false;
+  auto attempt = [&](int a, const int* used, int count) {
+    PencilInput I;
+    Status st = build_input(A, a, used, count, I);
+    RationalCurve c[3];
+    for (int j = 0; j < I.count && st == Status::ok; ++j)
+      st = make_line(I.curves[j].P, I.curves[j].d, c[j]);
+    Surface S;
+    if (st == Status::ok)
+      st = canal ? make_prcs(c[0], c[1], nullptr, u0, u1, S)
+                 : make_prrs(c[0], c[1], c[2], nullptr, u0, u1, S);
+    if (st == Status::ok) {
+      out = S;
+      if (input) *input = I;
+      return success = true;
+    }
+    if (!tried) first = st;
+    tried = true;
+    // Errors of the domain do not depend on the candidate: stop there.
+    return st == Status::bad_domain || st == Status::not_finite;
+  };
+  if (canal) for_each_prcs_input(A, attempt);
+  else for_each_prrs_input(A, attempt);
+  return success ? Status::ok : first;
 }
 
 }  // namespace
