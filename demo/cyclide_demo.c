@@ -80,6 +80,29 @@ static void circle_parameters(cyc_context* ctx, const cyc_surface* s, double u, 
   }
 }
 
+/* An NU x NV mesh (closed in v) with normals as OBJ. */
+static void write_mesh(const char* dir, const char* name, const double* pts, const double* nrm,
+                       FILE* report) {
+  char file[256];
+  FILE* f;
+  int i, j;
+  snprintf(file, sizeof file, "%s.obj", name);
+  f = open_out(dir, file);
+  fprintf(f, "# cyclide demo: %s, %d circles x %d points\n", name, NU, NV);
+  for (i = 0; i < NU * NV; ++i)
+    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
+  for (i = 0; i < NU * NV; ++i)
+    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+  for (i = 0; i + 1 < NU; ++i)
+    for (j = 0; j < NV; ++j) {
+      const int a = i * NV + j + 1, b = i * NV + (j + 1) % NV + 1;
+      const int c = a + NV, d = b + NV;
+      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, d, d, c, c);
+    }
+  fclose(f);
+  fprintf(report, "  wrote %s/%s\n", dir, file);
+}
+
 /* Mesh the surface (closed in v) and report the implicit residual. */
 static void write_surface(cyc_context* ctx, const cyc_surface* s, const char* dir,
                           const char* name, implicit_fn implicit, FILE* report) {
@@ -88,8 +111,6 @@ static void write_surface(cyc_context* ctx, const cyc_surface* s, const char* di
   size_t singular = 0;
   cyc_buffer3 P, N, none = {NULL, 0, 3};
   int i, j;
-  FILE* f;
-  char file[256];
   check(ctx, cyc_surface_domain(ctx, s, &u0, &u1), "cyc_surface_domain");
   for (i = 0; i < NU; ++i) {
     const double u = u0 + (u1 - u0) * i / (NU - 1);
@@ -116,21 +137,7 @@ static void write_surface(cyc_context* ctx, const cyc_surface* s, const char* di
   fprintf(report, "  implicit equation residual on %d mesh points: %.2e (scale %.1f)\n",
           NU * NV, worst, scale * scale * scale);
   fprintf(report, "  points with undefined normal (singular, e.g. P2, P3): %zu\n", singular);
-  snprintf(file, sizeof file, "%s.obj", name);
-  f = open_out(dir, file);
-  fprintf(f, "# cyclide demo: %s, %d circles x %d points\n", name, NU, NV);
-  for (i = 0; i < NU * NV; ++i)
-    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
-  for (i = 0; i < NU * NV; ++i)
-    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-  for (i = 0; i + 1 < NU; ++i)
-    for (j = 0; j < NV; ++j) {
-      const int a = i * NV + j + 1, b = i * NV + (j + 1) % NV + 1;
-      const int c = a + NV, d = b + NV;
-      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, d, d, c, c);
-    }
-  fclose(f);
-  fprintf(report, "  wrote %s/%s\n", dir, file);
+  write_mesh(dir, name, pts, nrm, report);
 }
 
 /* Polylines of the input curves and of the spine (PRCS) or directrix. */
@@ -260,9 +267,7 @@ static void write_inverted(cyc_context* ctx, const cyc_surface* s, const cyc_inv
   static double pts[NU * NV * 3], nrm[NU * NV * 3];
   double u0, u1, vs[NV], worst = 0, g[3], v;
   cyc_buffer3 P = {NULL, NV, 3}, N = {NULL, NV, 3}, none = {NULL, 0, 3};
-  char file[256];
-  FILE* f;
-  int i, j;
+  int i;
   check(ctx, cyc_surface_domain(ctx, s, &u0, &u1), "cyc_surface_domain");
   for (i = 0; i < NU; ++i) {
     const double u = u0 + (u1 - u0) * i / (NU - 1);
@@ -278,20 +283,7 @@ static void write_inverted(cyc_context* ctx, const cyc_surface* s, const cyc_inv
     if (v > worst) worst = v;
   }
   fprintf(report, "  inverted mesh: largest |F|/|grad F| on %d points: %.2e\n", NU * NV, worst);
-  snprintf(file, sizeof file, "%s.obj", name);
-  f = open_out(dir, file);
-  fprintf(f, "# cyclide demo: %s, %d circles x %d points\n", name, NU, NV);
-  for (i = 0; i < NU * NV; ++i)
-    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
-  for (i = 0; i < NU * NV; ++i)
-    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-  for (i = 0; i + 1 < NU; ++i)
-    for (j = 0; j < NV; ++j) {
-      const int a = i * NV + j + 1, b = i * NV + (j + 1) % NV + 1;
-      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, b + NV, b + NV, a + NV, a + NV);
-    }
-  fclose(f);
-  fprintf(report, "  wrote %s/%s\n", dir, file);
+  write_mesh(dir, name, pts, nrm, report);
 }
 
 static void darboux_demos(cyc_context* ctx, const char* dir, FILE* report) {

@@ -9,8 +9,11 @@
 #include "cyclide/darboux_classify.hpp"
 #include "cyclide/implicitize.hpp"
 #include "cyclide/surface.hpp"
+#include "seed000_equations.hpp"
 
 using namespace cyclide;
+using seed000::eq39;
+using seed000::eq73;
 
 namespace {
 
@@ -78,30 +81,6 @@ double double_line(const Darboux& D, const Vec3d& X) {
 constexpr double kOn = 1e-9;  // algebraic residual of fitted equations
 
 const double kTs[] = {-3.0, -1.1, -0.25, 0.0, 0.6, 2.0, 5.0};
-
-// Example 2 continued, (39).
-Darboux eq39() {
-  Darboux D;
-  D.k[kLz] = 4;
-  D.k[kQyy] = -8;
-  D.k[kQzz] = -3;
-  D.k[kQxy] = -6;
-  D.k[kBz] = -1;
-  return D;
-}
-
-// Example 3 continued, (73).
-Darboux eq73() {
-  Darboux D;
-  D.k[kLz] = 4;
-  D.k[kQyy] = -3;
-  D.k[kQzz] = -8;
-  D.k[kQxy] = -4;
-  D.k[kQyz] = -10;
-  D.k[kBy] = 10;
-  D.k[kBz] = 4;
-  return D;
-}
 
 // A fixed similarity (rotation about (1, 2, 2)/3, scale 2.5, translation).
 Similarity some_similarity() {

@@ -7,35 +7,13 @@
 
 #include "cyclide/darboux.hpp"
 #include "cyclide/inverted_surface.hpp"
+#include "seed000_equations.hpp"
 
 namespace cyclide {
 namespace {
 
-// Example 4, eq. (35): C = z (x^2+y^2+z^2) - y^2 - 3 z^2 - 3 x y + 2 z
-//                          + alpha (x z - 2 y z + 2 y).
-Darboux example4(double alpha) {
-  Darboux D;
-  D.k[kLz] = 1;
-  D.k[kQyy] = -1;
-  D.k[kQzz] = -3;
-  D.k[kQxy] = -3;
-  D.k[kBz] = 2;
-  D.k[kQxz] = alpha;
-  D.k[kQyz] = -2 * alpha;
-  D.k[kBy] = 2 * alpha;
-  return D;
-}
-
-// Example 2 continued, eq. (39): 4 z (x^2+y^2+z^2) - 8 y^2 - 3 z^2 - 6 x y - z.
-Darboux example2() {
-  Darboux D;
-  D.k[kLz] = 4;
-  D.k[kQyy] = -8;
-  D.k[kQzz] = -3;
-  D.k[kQxy] = -6;
-  D.k[kBz] = -1;
-  return D;
-}
+Darboux example4(double alpha) { return seed000::eq35(alpha); }  // (35)
+Darboux example2() { return seed000::eq39(); }                    // (39)
 
 // Is D (up to a factor fixing phi1 = n.X) a member of the DCMC family?
 // Returns the residual of D - base after removing the quadric direction,

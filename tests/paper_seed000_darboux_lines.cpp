@@ -6,84 +6,17 @@
 #include <cmath>
 
 #include "cyclide/darboux_lines.hpp"
+#include "seed000_equations.hpp"
 
 namespace cyclide {
 namespace {
 
-Darboux example4(double alpha) {  // (35)
-  Darboux D;
-  D.k[kLz] = 1;
-  D.k[kQyy] = -1;
-  D.k[kQzz] = -3;
-  D.k[kQxy] = -3;
-  D.k[kBz] = 2;
-  D.k[kQxz] = alpha;
-  D.k[kQyz] = -2 * alpha;
-  D.k[kBy] = 2 * alpha;
-  return D;
-}
-
-Darboux example2() {  // (39)
-  Darboux D;
-  D.k[kLz] = 4;
-  D.k[kQyy] = -8;
-  D.k[kQzz] = -3;
-  D.k[kQxy] = -6;
-  D.k[kBz] = -1;
-  return D;
-}
-
-// (60): the DCMC family of Example 5, in the paper's alpha.
-Darboux example5_family(double alpha) {
-  Darboux D;
-  D.k[kLz] = 1;
-  D.k[kQxy] = 0.5;
-  D.k[kQyy] = -1;
-  D.k[kQzz] = alpha;
-  D.k[kQxz] = -(34 + 8 * alpha) / 16;
-  D.k[kQyz] = -(9 + 4 * alpha) / 8;
-  D.k[kBy] = (13 + 4 * alpha) / 16;
-  D.k[kBz] = -(1 + 4 * alpha) / 16;
-  return D;
-}
-
-Darboux example5() {  // (61)
-  Darboux D;
-  D.k[kLz] = 1;
-  D.k[kQxy] = 0.5;
-  D.k[kQxz] = -0.5;
-  D.k[kQyz] = 0.5;
-  D.k[kQyy] = -1;
-  D.k[kQzz] = -13.0 / 4;
-  D.k[kBz] = 0.75;
-  return D;
-}
-
-// Appendix A (70): (cy - z)(X.X) + (1 - a^2 - c^2) y^2 + 2 a x y + 2 z^2 - c y - z.
-Darboux appendixA(double a, double c) {
-  Darboux D;
-  D.k[kLy] = c;
-  D.k[kLz] = -1;
-  D.k[kQyy] = 1 - a * a - c * c;
-  D.k[kQxy] = 2 * a;
-  D.k[kQzz] = 2;
-  D.k[kBy] = -c;
-  D.k[kBz] = -1;
-  return D;
-}
-
-// Appendix B (73): 4z(X.X) - 3y^2 - 8z^2 - 4xy - 10yz + 10y + 4z.
-Darboux appendixB() {
-  Darboux D;
-  D.k[kLz] = 4;
-  D.k[kQyy] = -3;
-  D.k[kQzz] = -8;
-  D.k[kQxy] = -4;
-  D.k[kQyz] = -10;
-  D.k[kBy] = 10;
-  D.k[kBz] = 4;
-  return D;
-}
+Darboux example4(double alpha) { return seed000::eq35(alpha); }
+Darboux example2() { return seed000::eq39(); }
+Darboux example5_family(double alpha) { return seed000::eq60(alpha); }
+Darboux example5() { return seed000::eq61(); }
+Darboux appendixA(double a, double c) { return seed000::eq70(a, c); }
+Darboux appendixB() { return seed000::eq73(); }
 
 // The index of the found line equal to L (as a set), or -1.
 int find_line(const ParabolicLines& A, const Line& L) {

@@ -547,6 +547,13 @@ Outcome read_inversion(const char* fn, const cyc_inversion& in, Inversion& out) 
   return from_core(fn, check_inversion(out));
 }
 
+void put_circle_or_line(cyc_circle_or_line& out, const CircleOrLine& C) {
+  out.is_line = C.is_line ? 1 : 0;
+  put3(out.point, C.point);
+  put3(out.axis, C.axis);
+  out.radius = C.radius;
+}
+
 void put_darboux(cyc_darboux* out, const Darboux& D) {
   std::memcpy(out->k, D.k, sizeof out->k);
 }
@@ -634,10 +641,7 @@ int cyc_invert_circle(cyc_context* ctx, const cyc_inversion* inv, const cyc_circ
     if (Status st = invert_circle(I, {c->is_line != 0, vec(c->point), vec(c->axis), c->radius}, R);
         st != Status::ok)
       return from_core(fn, st);
-    out->is_line = R.is_line ? 1 : 0;
-    put3(out->point, R.point);
-    put3(out->axis, R.axis);
-    out->radius = R.radius;
+    put_circle_or_line(*out, R);
     return ok();
   });
 }
@@ -696,10 +700,7 @@ int cyc_surface_circle_inverted(cyc_context* ctx, const cyc_surface* surface,
     CircleOrLine R;
     if (Status s = inverted_circle(surface->surface, I, u, R); s != Status::ok)
       return from_core_at(fn, s, u);
-    out->is_line = R.is_line ? 1 : 0;
-    put3(out->point, R.point);
-    put3(out->axis, R.axis);
-    out->radius = R.radius;
+    put_circle_or_line(*out, R);
     return ok();
   });
 }
@@ -930,10 +931,7 @@ int cyc_pencil_circle(cyc_context* ctx, const cyc_darboux* d, const cyc_line* li
     if (s == Status::invalid_argument)
       return fail(int(s), "%s: the line must lie on the cyclide and in the plane", fn);
     if (s != Status::ok) return from_core(fn, s);
-    out->is_line = C.is_line ? 1 : 0;
-    put3(out->point, C.point);
-    put3(out->axis, C.axis);
-    out->radius = C.radius;
+    put_circle_or_line(*out, C);
     return ok();
   });
 }
