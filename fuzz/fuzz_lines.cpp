@@ -384,10 +384,10 @@ int parabolic_lines_checked(Ctx& c, const cyc_darboux& D, cyc_cyclide_lines& out
     FZ_CHECK(std::abs(fz::dot3(L.direction, A.normal)) <= 1e-12, "line %d: d . n = %.3g", i,
              fz::dot3(L.direction, A.normal));
     const double nP = fz::norm3(L.point);
-    FZ_CHECK(std::abs(fz::dot3(L.point, L.direction)) <= 1e-12 * nP,
+    FZ_CHECK(std::abs(fz::dot3(L.point, L.direction)) <= 1e-12 * nP + 1e-300,
              "line %d: P not nearest the origin: P . d = %.3g (|P| = %g)", i,
              fz::dot3(L.point, L.direction), nP);
-    FZ_CHECK(std::abs(fz::dot3(L.point, A.normal) - L.t) <= 1e-10 * (nP + std::abs(L.t)),
+    FZ_CHECK(std::abs(fz::dot3(L.point, A.normal) - L.t) <= 1e-10 * (nP + std::abs(L.t)) + 1e-300,
              "line %d: n . P = %.17g but t = %.17g", i, fz::dot3(L.point, A.normal), L.t);
   }
   FZ_CHECK(A.l0_circles == 0 || A.l0_circles == 1, "l0_circles %d", A.l0_circles);
