@@ -23,6 +23,7 @@
 
 #include "cyclide/cyclide.h"
 #include "cyclide/darboux.hpp"  // the core, for BM_DcmcCore and the core value
+#include "cyclide/darboux_lines.hpp"  // the core, for BM_ParabolicLinesCore
 
 std::uint64_t cyc_bench_alloc_count();  // alloc_hook.cpp
 bool cyc_bench_alloc_hooked();          // false: allocations are not counted
@@ -522,5 +523,174 @@ BENCHMARK_CAPTURE(BM_EvalInverted, prcs_point, Kind::prcs, false);
 BENCHMARK_CAPTURE(BM_EvalInverted, prcs_point_du_dv_normal, Kind::prcs, true);
 BENCHMARK_CAPTURE(BM_EvalInverted, prrs_point, Kind::prrs, false);
 BENCHMARK_CAPTURE(BM_EvalInverted, prrs_point_du_dv_normal, Kind::prrs, true);
+
+// ------------------------------------------------------------ lines of parabolic cyclides (§8c)
+
+// Eq. (39) (Example 2 continued): 4z X.X - 8y^2 - 3z^2 - 6xy - z; five lines,
+// one double.
+constexpr cyc_darboux kEx2Cyclide = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
+// Eq. (61) (Example 5): z X.X + xy/2 - y^2 - 13z^2/4 - xz/2 + yz/2 + 3z/4; six lines.
+constexpr cyc_darboux kEx5Cyclide = {{0, 0, 0, 1, 0, -1, -3.25, 0.5, -0.5, 0.5, 0, 0, 0.75, 0}};
+// Example 5's lines (57) with mu = 1/2 applied to d3: (58).
+constexpr cyc_line kEx5Lines[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}},
+                                   {{1, 1, 1}, {-1, 2, 0}}};
+
+const cyc_darboux& lines_cyclide(int which) { return which == 2 ? kEx2Cyclide : kEx5Cyclide; }
+
+// The line and circle-family analysis through the core (one 5x5 real
+// eigenproblem, up to five 3x3 symmetric ones).
+void BM_ParabolicLinesCore(benchmark::State& state, int which) {
+  using namespace cyclide;
+  Darboux D;
+  std::memcpy(D.k, lines_cyclide(which).k, sizeof D.k);
+  Status bad = Status::ok;
+  int lines = 0;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(D);
+    ParabolicLines A;
+    const Status st = parabolic_lines(D, A);
+    if (st != Status::ok) bad = st;
+    lines = A.line_count;
+    benchmark::DoNotOptimize(A);
+  }
+  allocs.finish();
+  if (bad != Status::ok) {
+    state.SkipWithError("parabolic_lines (core) failed");
+    return;
+  }
+  state.counters["lines"] = lines;
+  state.SetItemsProcessed(state.iterations());
+}
+
+// The same through cyc_parabolic_lines.
+void BM_ParabolicLinesCapi(benchmark::State& state, int which) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  cyc_darboux D = lines_cyclide(which);
+  cyc_cyclide_lines A;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(D);
+    const int st = cyc_parabolic_lines(f.ctx, &D, &A);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(A);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_parabolic_lines", bad, f.ctx).c_str());
+    return;
+  }
+  state.counters["lines"] = A.line_count;
+  state.SetItemsProcessed(state.iterations());
+}
+
+// cyc_pencil_circle on Example 5's six lines, planes at 64 angles (the
+// plane through l0 excluded).
+void BM_PencilCircle(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const cyc_darboux D = kEx5Cyclide;
+  cyc_cyclide_lines A;
+  if (int st = cyc_parabolic_lines(f.ctx, &D, &A); st != CYC_OK || A.line_count == 0) {
+    state.SkipWithError(describe("cyc_parabolic_lines", st, f.ctx).c_str());
+    return;
+  }
+  struct Query {
+    cyc_line line;
+    double m[3];
+  };
+  std::vector<Query> q;
+  for (int i = 0; i < A.line_count; ++i) {
+    const cyc_cyclide_line& L = A.lines[i];
+    const double* n = A.normal;
+    const double* d = L.direction;
+    const double k[3] = {n[1] * d[2] - n[2] * d[1], n[2] * d[0] - n[0] * d[2],
+                         n[0] * d[1] - n[1] * d[0]};
+    for (int a = 1; a <= 64; ++a) {
+      const double th = M_PI * a / 65.0;
+      Query x;
+      std::memcpy(x.line.point, L.point, sizeof x.line.point);
+      std::memcpy(x.line.direction, L.direction, sizeof x.line.direction);
+      for (int j = 0; j < 3; ++j) x.m[j] = std::cos(th) * n[j] + std::sin(th) * k[j];
+      q.push_back(x);
+    }
+  }
+  std::size_t i = 0;
+  int bad = CYC_OK;
+  cyc_circle_or_line C;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    const Query& x = q[i++ % q.size()];
+    const int st = cyc_pencil_circle(f.ctx, &D, &x.line, x.m, &C);
+    if (st != CYC_OK && st != CYC_E_EMPTY_REAL_LOCUS && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(C);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_pencil_circle", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// Seed 000 §8: DCMC on l1, l3, l4 and the member through l2, for (58).
+void BM_PrrsLinesCyclide(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  cyc_line L[3] = {kEx5Lines[0], kEx5Lines[1], kEx5Lines[2]};
+  cyc_darboux D;
+  double residual = 0;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(L);
+    const int st = cyc_prrs_lines_cyclide(f.ctx, L, &D, &residual);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(D);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_prrs_lines_cyclide", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// Props. 3 / 5: the analysis, the pencil's lines and the surface's creation
+// (allocates the handle: creation tier), then cyc_surface_destroy.
+void BM_ParabolicParameterize(benchmark::State& state, int kind) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const cyc_darboux D = kind == CYC_SURFACE_PRCS ? kEx2Cyclide : kEx5Cyclide;
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    cyc_surface* S = nullptr;
+    const int st = cyc_parabolic_parameterize(f.ctx, &D, kind, -1, 1, nullptr, &S);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(S);
+    cyc_surface_destroy(f.ctx, S);
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_parabolic_parameterize", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+BENCHMARK_CAPTURE(BM_ParabolicLinesCore, ex2_eq39, 2);
+BENCHMARK_CAPTURE(BM_ParabolicLinesCore, ex5_eq61, 5);
+BENCHMARK_CAPTURE(BM_ParabolicLinesCapi, ex2_eq39, 2);
+BENCHMARK_CAPTURE(BM_ParabolicLinesCapi, ex5_eq61, 5);
+BENCHMARK(BM_PencilCircle);
+BENCHMARK(BM_PrrsLinesCyclide);
+BENCHMARK_CAPTURE(BM_ParabolicParameterize, prcs_ex2_eq39, CYC_SURFACE_PRCS);
+BENCHMARK_CAPTURE(BM_ParabolicParameterize, prrs_ex5_eq61, CYC_SURFACE_PRRS);
 
 }  // namespace

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/ and fuzz_darboux/.
+"""Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/ and
+fuzz_lines/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -1116,6 +1117,248 @@ def darboux_seeds():
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_lines
+
+class LinesEncoder(Encoder):
+    """Mirrors fuzz_lines.cpp. Cyclides, lines, analyses as the harness reads
+    them; `lines` arguments give how many lines the analysis finds (needed
+    for the pencil-circle choices: index 0 is always used)."""
+
+    coord = DarbouxEncoder.coord
+    coords = DarbouxEncoder.coords
+
+    def __init__(self, handler=True):
+        super().__init__()
+        self.flag(handler)
+        self.nops = 0
+        self.nops_at = len(self.consumed)
+
+    def finish(self):
+        body = self.consumed[self.nops_at:]
+        self.consumed = self.consumed[:self.nops_at]
+        assert 1 <= self.nops <= 8
+        self.range(1, 8, self.nops)
+        self.consumed.extend(body)
+        return self.data()
+
+    def op(self, code):
+        self.nops += 1
+        self.range(0, 4, code)
+
+    def dyadic(self, v):
+        assert v * 64 == int(v * 64) and abs(v) <= 2, v
+        self.range(-128, 128, int(v * 64))
+
+    def example(self, spec):
+        """("ex2",) | ("ex5",) | ("ex4", a) | ("appA", a, c) | ("appB",) |
+        ("family", a)."""
+        names = ["ex2", "ex5", "ex4", "appA", "appB", "family"]
+        self.range(0, 5, names.index(spec[0]))
+        for v in spec[1:]:
+            self.coord(v)
+
+    def three(self, good, a0, s1, s2, h0, g1, g2, points, perm=0, signs=0):
+        self.flag(good)
+        self.range(0, 179, a0)
+        for s in (s1, s2):
+            self.range(10, 80, s) if good else self.range(0, 179, s)
+        self.dyadic(h0)
+        for g in (g1, g2):
+            self.dyadic(g - 0.25 if good else g)
+        self.range(0, 5, perm)
+        self.range(0, 7, signs)
+        for px, py in points:
+            self.dyadic(px)
+            self.dyadic(py)
+
+    def cyclide(self, spec, scale=None):
+        """("example", ex) | ("coeffs", k14) | ("dcmc", three_args, alpha) |
+        ("z_sphere", which, e, v) (z (X.X - 1) + v 2^-e on k[which]) |
+        ("hostile", ex, which, v)."""
+        kind = spec[0]
+        if kind == "example":
+            self.range(0, 6, 0)
+            self.example(spec[1])
+        elif kind == "coeffs":
+            self.range(0, 6, 1)
+            self.coords(spec[1])
+            self.rarely(spec[1][0] != 0)
+        elif kind == "dcmc":
+            self.range(0, 6, 5)
+            self.three(*spec[1])
+            self.coord(spec[2])
+        elif kind == "z_sphere":
+            _, which, e, v = spec
+            self.range(0, 6, 3)
+            self.flag(True)   # z (X.X + f), l = e_z
+            self.flag(True)   # delta = 0
+            self.flag(True)   # f = -1
+            self.range(0, 13, which)
+            self.range(0, 60, e)
+            self.coord(v)
+        else:
+            _, ex, which, v = spec
+            self.range(0, 6, 6)
+            self.example(ex)
+            self.range(0, 13, which)
+            self.wild(v)
+        self.rarely(scale is not None)
+        if scale is not None:
+            self.flag(True)
+            self.range(-60, 60, scale)
+
+    def parameterize(self, kind, domain=None, inputs=True, nulls=0):
+        """kind: "prcs" | "prrs" | 0 | ("any", k)."""
+        if kind == "prcs":
+            self.range(0, 3, 0)
+        elif kind == "prrs":
+            self.range(0, 3, 1)
+        elif kind == 0:
+            self.range(0, 3, 2)
+        else:
+            self.range(0, 3, 3)
+            self.range(-3, 7, kind[1])
+        self.flag(domain is None)
+        if domain is not None:
+            self.coord(domain[0])
+            self.coord(domain[1])
+        self.rarely(not inputs)
+        self.rarely(nulls != 0)
+        if nulls:
+            self.range(1, 2, nulls)
+
+    def analysis(self, lines, scale=1, pencils=(), param=None, null_out=False):
+        """After a successful cyc_parabolic_lines with `lines` lines:
+        pencils = angles in degrees (0: the plane through l0) of line 0."""
+        self.rarely(null_out)
+        if lines is not None:
+            self.range(-8, 8, scale)
+            if lines:
+                self.range(0, 3, len(pencils))
+                for a in pencils:
+                    if lines > 1:
+                        self.range(0, lines - 1, 0)
+                    self.flag(a == 0)
+                    if a:
+                        self.range(1, 179, a)
+        self.flag(param is not None)
+        if param is not None:
+            self.parameterize(*param)
+
+    def analyze(self, cyclide, lines, **kw):
+        self.op(0)
+        self.cyclide(cyclide)
+        self.analysis(lines, **kw)
+
+    def dcmc_member(self, three_args, alpha, lines, **kw):
+        self.op(1)
+        self.three(*three_args)
+        self.flag(True)
+        self.dyadic(alpha)
+        self.analysis(lines, **kw)
+
+    def pencil(self, cyclide, P, d, m, nulls=0):
+        self.op(2)
+        self.cyclide(cyclide)
+        self.coords(P)
+        self.coords(d)
+        self.coords(m)
+        self.rarely(nulls != 0)
+        if nulls:
+            self.range(1, 4, nulls)
+
+    def param_op(self, cyclide, *param):
+        self.op(3)
+        self.cyclide(cyclide)
+        self.parameterize(*param)
+
+    def prrs(self, lines, apply_mu=False, nulls=0, analyze=None):
+        """lines: ("ex5", hat) | ("normal", u0, h, O, d1, d2, d3, P3xy) |
+        ("any", [(P, d)] * 3); analyze: None or (line count, analysis kw)
+        when the cyclide is computed."""
+        self.op(4)
+        if lines[0] == "ex5":
+            self.range(0, 3, 0)
+            self.flag(lines[1])
+        elif lines[0] == "normal":
+            _, u0, h, O, d1, d2, d3, P3 = lines
+            self.range(0, 3, 1)
+            self.dyadic(u0)
+            self.dyadic(h)
+            for v in O:
+                self.dyadic(v)
+            for d in (d1, d2, d3):
+                self.dyadic(d[0])
+                self.dyadic(d[1])
+            self.dyadic(P3[0])
+            self.dyadic(P3[1])
+            self.rarely(False)
+        else:
+            self.range(0, 3, 3)
+            for P, d in lines[1]:
+                self.coords(P)
+                self.coords(d)
+        self.flag(apply_mu)
+        self.rarely(nulls != 0)
+        if nulls:
+            self.range(1, 2, nulls)
+        if analyze is not None:
+            self.flag(True)
+            self.analysis(analyze[0], **analyze[1])
+
+
+def lines_seeds():
+    seeds = {}
+    # Example 2 (39): five lines, l3 double; Prop. 3 (PRCS) and Prop. 5.
+    e = LinesEncoder()
+    e.analyze(("example", ("ex2",)), 5, scale=3, pencils=(0, 45, 120), param=("prcs",))
+    e.analyze(("example", ("ex2",)), 5, scale=-2, pencils=(90,), param=("prrs", (-2, 3)))
+    seeds["seed-example2"] = e.finish()
+    # Example 5 (61): six lines; Prop. 5 (PRRS); Prop. 3 fails (no double line).
+    e = LinesEncoder()
+    e.analyze(("example", ("ex5",)), 6, scale=1, pencils=(0, 30, 150), param=("prrs",))
+    e.analyze(("example", ("ex5",)), 6, scale=-1, pencils=(60,), param=("prcs",))
+    seeds["seed-example5"] = e.finish()
+    # Example 4 (35), the family (60), App. A (70), App. B (73).
+    e = LinesEncoder(handler=False)
+    e.analyze(("example", ("ex4", 1)), 6, scale=2, pencils=(0, 77), param=("prrs",))
+    e.analyze(("example", ("family", -3.25)), 6, scale=4, pencils=(10,))
+    e.analyze(("example", ("appA", 2, 1)), 4, pencils=(0, 100), param=("prcs",))
+    e.analyze(("example", ("appB",)), 3, pencils=(45,), param=("prcs", (0, 1)))
+    seeds["seed-paper-examples"] = e.finish()
+    # DCMC members of well-separated lines: the three lines are found.
+    e = LinesEncoder()
+    three = (True, 20, 50, 60, 0.5, 0.75, 0.5, [(0.25, -1), (1, 0.5), (-0.5, 0)], 1, 5)
+    e.dcmc_member(three, 0.5, 6, scale=5, pencils=(0, 90), param=("prrs",))
+    e.analyze(("dcmc", three, 1.5), 6, pencils=(33,))
+    seeds["seed-dcmc-members"] = e.finish()
+    # Seed 000 §8: Example 5 (given lines, with mu = 1/2 applied), normal form.
+    e = LinesEncoder()
+    e.prrs(("ex5", False), apply_mu=True, analyze=(6, dict(pencils=(0, 45), param=("prrs",))))
+    e.prrs(("ex5", True))
+    e.prrs(("normal", 0.5, 1, (0, 0, 0), (1, 0), (2, 1), (-1, 1.5), (1, 1)), apply_mu=True)
+    e.prrs(("any", [((0, 0, 0), (1, 0, 0)), ((0, 0, 1), (0, 1, 0)), ((1, 1, 1), (1, 1, 0))]))
+    e.prrs(("ex5", False), nulls=2)
+    seeds["seed-prrs-lines"] = e.finish()
+    # Hostile: near-reducible z (X.X - 1) + tiny, NaN / Inf / huge
+    # coefficients, lines not on the cyclide, bad kinds and domains, NULLs.
+    e = LinesEncoder()
+    e.analyze(("z_sphere", 13, 40, 1), None, param=("prrs",))
+    e.analyze(("z_sphere", 5, 52, -3), None)
+    e.analyze(("hostile", ("ex2",), 0, NAN), None, param=("prcs",))
+    e.analyze(("hostile", ("ex5",), 3, 1e300), None)
+    seeds["seed-hostile-cyclides"] = e.finish()
+    e = LinesEncoder()
+    e.pencil(("example", ("ex2",)), (0, 0, 0), (1, 0, 0), (0, 0, 1))
+    e.pencil(("example", ("ex2",)), (0, 0, 5), (1, 0, 0), (0, 1, 0))
+    e.pencil(("example", ("ex2",)), (0, 0, 0), (1, 0, 0), (0, 0, 1), nulls=4)
+    e.param_op(("example", ("ex5",)), ("any", 7))
+    e.param_op(("example", ("ex5",)), "prrs", (2, -2))
+    e.param_op(("example", ("ex2",)), "prcs", None, True, 2)
+    seeds["seed-hostile-lines"] = e.finish()
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -1158,4 +1401,5 @@ if __name__ == "__main__":
     write("fuzz_create", create_seeds())
     write("fuzz_eval", eval_seeds())
     write("fuzz_darboux", darboux_seeds())
+    write("fuzz_lines", lines_seeds())
     write_dictionary()

@@ -298,5 +298,26 @@ TEST(DarbouxLines, Statuses) {
   EXPECT_EQ(parameterize_parabolic_prcs(appendixA(0, 0), -1, 1, S), Status::too_few_lines);
 }
 
+// Regression (fuzz_lines, fuzz/corpus/fuzz_lines/regress-subnormal-normal):
+// subnormal coefficients made |l| underflow to 0, and parabolic_lines
+// returned ok with a NaN normal. The analysis now divides by a power of two
+// near max |k| first, so 2^-1072 x (39) gives exactly the lines of (39).
+TEST(DarbouxLines, RegressionSubnormalCoefficientsGiveTheSameLines) {
+  const Darboux D = example2();
+  Darboux tiny = D;
+  for (double& v : tiny.k) v = std::ldexp(v, -1072);
+  ParabolicLines A, B;
+  ASSERT_EQ(parabolic_lines(D, A), Status::ok);
+  ASSERT_EQ(parabolic_lines(tiny, B), Status::ok);
+  ASSERT_TRUE(B.n.allFinite());
+  ASSERT_EQ(B.line_count, A.line_count);
+  EXPECT_EQ(B.plane_count, A.plane_count);
+  for (int i = 0; i < A.line_count; ++i) {
+    EXPECT_EQ(B.lines[i].line.P, A.lines[i].line.P) << i;
+    EXPECT_EQ(B.lines[i].line.d, A.lines[i].line.d) << i;
+    EXPECT_EQ(B.lines[i].t, A.lines[i].t) << i;
+  }
+}
+
 }  // namespace
 }  // namespace cyclide

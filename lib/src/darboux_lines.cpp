@@ -283,7 +283,14 @@ Status parabolic_lines(const Darboux& D, ParabolicLines& out) {
   for (double v : D.k)
     if (!input_ok(v)) return Status::not_finite;
   if (darboux_type(D) != DarbouxType::parabolic) return Status::not_parabolic;
-  const Sections P = sections_of(D);
+  // The lines do not depend on the equation's scale: divide by a power of
+  // two near max |k| (exact), so that |l| and the products below neither
+  // underflow nor overflow (fuzz_lines: subnormal coefficients gave
+  // |l| = 0 and a NaN normal with ok).
+  Darboux U = D;
+  const int e = std::ilogb(D.scale());
+  for (double& v : U.k) v = std::ldexp(v, -e);
+  const Sections P = sections_of(U);
   // The planes where A(t) is singular: t = -(eigenvalues of S).
   double m0, m1;
   Vec2 w0, w1;
@@ -309,7 +316,7 @@ Status parabolic_lines(const Darboux& D, ParabolicLines& out) {
       }
     if (!std::isnan(t)) section_lines(P, t, F);
   }
-  if (!lines_finite(F)) return Status::numerical_overflow;
+  if (!lines_finite(F) || !P.n.allFinite()) return Status::numerical_overflow;
   ParabolicLines R;
   R.n = P.n;
   R.plane_count = F.plane_count;
