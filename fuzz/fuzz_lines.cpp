@@ -427,8 +427,8 @@ void check_pencil(Ctx& c, const cyc_darboux& D, const cyc_cyclide_lines& A, int 
     FZ_CHECK(untouched(r[0]), "cyc_pencil_circle: %s but wrote the output",
              cyc_status_name(s[0]));
     // The plane through l0 of a line whose section is (line, l0 twice) has
-    // no residual line: NOT_PARABOLIC (see fuzz/README.md).
-    if (ws && !(angle_deg == 0 && s[0] == CYC_E_NOT_PARABOLIC))
+    // no finite residual: EMPTY_REAL_LOCUS, like an imaginary circle.
+    if (ws)
       FZ_CHECK(s[0] == CYC_E_EMPTY_REAL_LOCUS,
                "pencil_circle rejects line %d of the well-scaled cyclide: %s", i,
                cyc_status_name(s[0]));
@@ -588,7 +588,7 @@ void analyze(Input& in, Ctx& c, const cyc_darboux& D, const Three* expect, bool 
                                std::cbrt(std::abs(D.k[13]) / ln)});
     for (int i = 0; i < A.plane_count; ++i)
       for (int j = i + 1; j < A.plane_count; ++j)
-        if (std::abs(A.plane_t[i] - A.plane_t[j]) < 1e-2 * L) ws = false;
+        if (std::abs(A.plane_t[i] - A.plane_t[j]) < 1e-6 * L) ws = false;
     // Lines far beyond the length scale (|P| > 1e3 L, e.g. a parallel pair
     // 4e4 L apart) are ill-conditioned: not judged.
     for (int i = 0; i < A.line_count; ++i)

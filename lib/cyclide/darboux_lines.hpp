@@ -83,7 +83,8 @@ Status parabolic_lines(const Darboux& D, ParabolicLines& out);
 // normal m (m orthogonal to L.d), besides L itself; for the plane through
 // l0 the residual is the other line of the pair (is_line). invalid_argument
 // if L is not on F or m not orthogonal to L.d; empty_real_locus if the
-// residual circle is imaginary.
+// residual circle is imaginary, or if in the plane through l0 nothing
+// finite is left (the section is L and l0 counted twice).
 Status pencil_circle(const Darboux& D, const Line& L, const Vec3d& m, CircleOrLine& out);
 
 // ------------------------------------------------ Props. 3 and 5 (§7, §8)

@@ -1,6 +1,7 @@
 #include "cyclide/darboux_lines.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
@@ -115,33 +116,42 @@ P5 section_determinant(const Sections& P) {
 }
 
 // Newton on p from t (a few steps, each kept only while it stays close).
-double polish(const P5& p, double t) {
+// Newton on p from t; false unless it converges (the last step below
+// 1e-10 (1 + |t|), or p(t) = 0): at the real part of a complex pair with a
+// small imaginary part Newton wanders instead.
+bool polish(const P5& p, double& t) {
   const P5 dp = p.derivative();
-  for (int it = 0; it < 4; ++it) {
-    const double d = dp(t);
-    if (!(std::abs(d) > 0)) break;
-    const double next = t - p(t) / d;
-    if (!(std::abs(next - t) <= 1e-3 * (1 + std::abs(t)))) break;
-    t = next;
+  for (int it = 0; it < 6; ++it) {
+    const double v = p(t), d = dp(t);
+    if (v == 0) return true;
+    if (!(std::abs(d) > 0)) return false;
+    const double step = v / d;
+    if (!(std::abs(step) <= 1e-3 * (1 + std::abs(t)))) return false;
+    t -= step;
+    if (std::abs(step) <= 1e-10 * (1 + std::abs(t))) return true;
   }
-  return t;
+  return false;
 }
 
 // Is t a root of r to rounding (relative to the sizes of its terms)?
-bool is_root(const P5& r, double t) {
+// (tight: the test for a multiple root at the polished center of a cluster,
+// where two distinct roots delta apart leave |r| ~ |r''| delta^2 / 8).
+bool is_root(const P5& r, double t, bool tight = false) {
   double size = 0;
   for (int k = 5; k >= 0; --k) size = size * std::abs(t) + std::abs(r.c[k]);
   // In the scaled coordinates every input of r is O(1) or less, so its
   // coefficients carry absolute rounding errors ~1e-16: hence the floor.
-  return std::abs(r(t)) <= 1e-11 * size + 1e-14;
+  return tight ? std::abs(r(t)) <= 1e-14 * size + 1e-15
+               : std::abs(r(t)) <= 1e-11 * size + 1e-14;
 }
 
 // Real roots of the monic quintic r. A double line is a root of
 // multiplicity 2 or 3, which the eigenvalues split by up to ~eps^(1/3)
-// (also into complex pairs): a cluster is polished by Newton on the
-// derivative of its multiplicity and kept if r vanishes there; otherwise
-// its members are separate simple roots. Complex pairs with a tiny
-// imaginary part are no roots unless r vanishes at their real part.
+// (also into complex pairs with |Im| <= 1e-5): a cluster is polished by
+// Newton on the derivative of its multiplicity and kept if that converges
+// and r vanishes there (tightly); otherwise its members are separate simple
+// roots, kept where Newton on r converges and r vanishes (a complex pair's
+// real part fails: fuzz_lines limit-close-degenerate-planes).
 int real_roots(const P5& r, double (&roots)[5]) {
   Eigen::Matrix<double, 5, 5> C = Eigen::Matrix<double, 5, 5>::Zero();
   for (int i = 1; i < 5; ++i) C(i, i - 1) = 1;
@@ -151,7 +161,7 @@ int real_roots(const P5& r, double (&roots)[5]) {
   int count = 0;
   for (int i = 0; i < 5; ++i) {
     const auto z = eig.eigenvalues()[i];
-    if (std::abs(z.imag()) <= 1e-4 * (1 + std::abs(z.real()))) re[count++] = z.real();
+    if (std::abs(z.imag()) <= 1e-5 * (1 + std::abs(z.real()))) re[count++] = z.real();
   }
   for (int i = 1; i < count; ++i)  // insertion sort (at most five values)
     for (int j = i; j > 0 && re[j] < re[j - 1]; --j) std::swap(re[j], re[j - 1]);
@@ -169,14 +179,16 @@ int real_roots(const P5& r, double (&roots)[5]) {
       t /= (j - i);
       P5 p = r;
       for (int m = 1; m < j - i; ++m) p = p.derivative();
-      t = polish(p, t);
-      if (is_root(r, t)) {
+      if (polish(p, t) && is_root(r, t, true)) {
         keep(t);
         i = j;
         continue;
       }
     }
-    for (int k = i; k < j; ++k) keep(polish(r, re[k]));
+    for (int k = i; k < j; ++k) {
+      double t = re[k];
+      if (polish(r, t)) keep(t);
+    }
     i = j;
   }
   return out;
@@ -269,6 +281,45 @@ bool degenerate_at(const Sections& P, double t) {
   return std::abs(P.beta(t).dot(v)) <= kLineAnalysisTol;
 }
 
+// Gauss-Newton polish of a simple line on F (the conic split is only as
+// accurate as its plane t, which is ill-conditioned where two degenerate
+// planes are close): the line's three degrees of freedom, a shift in its
+// plane (along m = n x d), a shift of the plane (along n) and a turn in the
+// plane (d -> d + phi m), against F(P + s d) = 0 at four s, which is the
+// whole cubic restriction. Steps are kept only while the residual drops.
+void polish_line(const Darboux& U, const Vec3d& n, double L, CyclideLine& c) {
+  Vec3d P = c.line.P, d = c.line.d;
+  const double s4[4] = {-1.5 * L, -0.5 * L, 0.5 * L, 1.5 * L};
+  auto residual = [&](const Vec3d& Q, const Vec3d& e) {
+    double r = 0;
+    for (double s : s4) r += std::pow(U.value(Q + s * e), 2);
+    return r;
+  };
+  double best = residual(P, d);
+  for (int it = 0; it < 4 && best > 0; ++it) {
+    const Vec3d m = n.cross(d);
+    Eigen::Matrix<double, 4, 3> J;
+    Eigen::Vector4d r;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3d X = P + s4[i] * d, g = U.gradient(X);
+      r[i] = U.value(X);
+      J(i, 0) = g.dot(m);
+      J(i, 1) = g.dot(n);
+      J(i, 2) = s4[i] * g.dot(m);
+    }
+    const Eigen::Vector3d step = J.colPivHouseholderQr().solve(-r);
+    const Vec3d Q = P + step[0] * m + step[1] * n, e = (d + step[2] * m).normalized();
+    const double next = residual(Q, e);
+    if (!(next < best)) break;
+    best = next;
+    P = Q;
+    d = e;
+  }
+  c.line.d = d;
+  c.line.P = P - P.dot(d) * d;
+  c.t = n.dot(c.line.P);
+}
+
 bool lines_finite(const Found& F) {
   for (int i = 0; i < F.line_count; ++i)
     if (!F.lines[i].line.P.allFinite() || !F.lines[i].line.d.allFinite() ||
@@ -298,24 +349,27 @@ Status parabolic_lines(const Darboux& D, ParabolicLines& out) {
   const double special[2] = {-m1, -m0};
   double roots[5];
   const int nr = real_roots(section_determinant(P), roots);
-  // A double line's plane is a multiple root at t = -mu_k, known in closed
-  // form: snap the nearby roots to it when the conic there is degenerate.
+  // Where A(t) is singular (t = -mu_k, in closed form) and the conic is
+  // degenerate, r(t) = -lambda (beta.v)^2 = 0: that plane is a root, a
+  // multiple one for a double line, which the eigenvalues split into
+  // nearby reals or complex pairs (by ~1e-5 for fitted equations). It is
+  // analyzed at the exact t, and the roots within 1e-4 of it are its
+  // splinters (a distinct plane that close is below the resolution).
   Found F;
-  bool done[2] = {false, false};
-  for (int i = 0; i < nr; ++i) {
-    double t = roots[i];
+  bool root_at[2] = {degenerate_at(P, special[0]), degenerate_at(P, special[1])};
+  if (root_at[0] && root_at[1] && std::abs(special[0] - special[1]) <= kLineAnalysisTol)
+    root_at[1] = false;
+  auto near_special = [&](double t) {
     for (int k = 0; k < 2; ++k)
-      if (std::abs(t - special[k]) <= 1e-4 * (1 + std::abs(special[k])) &&
-          degenerate_at(P, special[k])) {
-        if (done[k] || (k == 1 && done[0] && std::abs(special[0] - special[1]) <= kLineAnalysisTol))
-          t = NAN;
-        else
-          t = special[k];
-        done[k] = true;
-        break;
-      }
-    if (!std::isnan(t)) section_lines(P, t, F);
-  }
+      if (root_at[k] && std::abs(t - special[k]) <= 1e-4 * (1 + std::abs(special[k]))) return true;
+    return false;
+  };
+  for (int k = 0; k < 2; ++k)
+    if (root_at[k]) section_lines(P, special[k], F);
+  for (int i = 0; i < nr; ++i)
+    if (!near_special(roots[i])) section_lines(P, roots[i], F);
+  for (int i = 0; i < F.line_count; ++i)
+    if (F.lines[i].multiplicity == 1) polish_line(U, P.n, P.L, F.lines[i]);
   if (!lines_finite(F) || !P.n.allFinite()) return Status::numerical_overflow;
   ParabolicLines R;
   R.n = P.n;
@@ -354,7 +408,8 @@ Status pencil_circle(const Darboux& D, const Line& L, const Vec3d& m, CircleOrLi
   CircleOrLine C;
   C.axis = mh;
   if (std::abs(le) <= 1e-12 * l.norm()) {  // the plane through l0: the other line
-    if (!(std::hypot(bs, br) > 0)) return Status::not_parabolic;
+    // No finite residual: the section is the line and l0 counted twice.
+    if (!(std::hypot(bs, br) > 0)) return Status::empty_real_locus;
     const double k = -c0 / (bs * bs + br * br);
     C.is_line = true;
     C.point = P + k * bs * d + k * br * e;
