@@ -2205,6 +2205,102 @@ static void test_classify(cyc_context* ctx) {
   CHECK_STATUS(ctx, cyc_darboux_fit_points(ctx, pts, 30, &F), CYC_E_NOT_FINITE);
 }
 
+/* Blends (seed 000 §9): two quadratic cones (PRRS of three lines through
+ * an apex) joined by ringed and canal blends; derivatives; the report. */
+static cyc_surface* blend_cone(cyc_context* ctx, const double apex[3], const double e1[3],
+                               const double e2[3], const double e3[3]) {
+  cyc_curve* L[3] = {NULL, NULL, NULL};
+  cyc_surface* S = NULL;
+  int k, j;
+  for (k = 0; k < 3; ++k) {
+    const double t = 2.0 * 3.14159265358979323846 * k / 3 + 0.3;
+    double d[3];
+    for (j = 0; j < 3; ++j) d[j] = cos(t) * e1[j] + sin(t) * e2[j] + e3[j];
+    CHECK_STATUS(ctx, cyc_curve_create_line(ctx, apex, d, &L[k]), CYC_OK);
+  }
+  CHECK_STATUS(ctx, cyc_prrs_create(ctx, L[0], L[1], L[2], NULL, 0.5, 1.0, &S), CYC_OK);
+  for (k = 0; k < 3; ++k) cyc_curve_destroy(ctx, L[k]);
+  return S;
+}
+
+static void test_blends(cyc_context* ctx) {
+  const double O[3] = {0, 0, 0}, A2[3] = {4, 0, 4};
+  const double X[3] = {1, 0, 0}, Y[3] = {0, 1, 0}, Z[3] = {0, 0, 1}, MX[3] = {-1, 0, 0};
+  cyc_surface *a = blend_cone(ctx, O, X, Y, Z), *b = blend_cone(ctx, A2, Y, Z, MX);
+  cyc_surface *r = SURF_SENT, *c = SURF_SENT;
+  cyc_blend_end s, e;
+  cyc_continuity R;
+  double d[3 * (CYC_MAX_BLEND_ORDER + 1)], p[3], du[3];
+  int l;
+  if (!a || !b) return;
+
+  /* Derivatives: K = 1 agrees with cyc_surface_eval; bad K, NULLs untouched. */
+  fill(d, 3 * (CYC_MAX_BLEND_ORDER + 1));
+  CHECK_STATUS(ctx, cyc_surface_derivatives_u(ctx, a, 0.7, 0.3, -1, d), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_surface_derivatives_u(ctx, a, 0.7, 0.3, CYC_MAX_BLEND_ORDER + 1, d),
+               CYC_E_DEGREE_TOO_HIGH);
+  CHECK_STATUS(ctx, cyc_surface_derivatives_u(ctx, NULL, 0.7, 0.3, 1, d), CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_surface_derivatives_u(ctx, a, 0.7, 0.3, 1, NULL), CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_surface_derivatives_u(ctx, a, NAN, 0.3, 1, d), CYC_E_NOT_FINITE);
+  CHECK(untouched(d, 3 * (CYC_MAX_BLEND_ORDER + 1)));
+  CHECK_STATUS(ctx, cyc_surface_derivatives_u(ctx, a, 0.7, 0.3, 1, d), CYC_OK);
+  CHECK(untouched(d + 6, 3 * (CYC_MAX_BLEND_ORDER - 1)));
+  CHECK_STATUS(ctx, cyc_surface_eval(ctx, a, 0.7, 0.3, p, du, NULL, NULL), CYC_OK);
+  for (l = 0; l < 3; ++l) CHECK(fabs(d[l] - p[l]) < 1e-12 && fabs(d[3 + l] - du[l]) < 1e-12);
+
+  /* Ringed blend K = 1 (Fig. 6), lambda chosen automatically (+1, -1). */
+  s.surface = a;
+  s.u = 1.0;
+  s.v[0] = HUGE_VAL;
+  s.v[1] = -0.5;
+  s.v[2] = 0.7;
+  s.lambda = 0.0;
+  e = s;
+  e.surface = b;
+  CHECK_STATUS(ctx, cyc_blend_ringed(ctx, &s, &e, 0, 0.0, 1.0, &r), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed(ctx, &s, &e, CYC_MAX_BLEND_ORDER + 1, 0.0, 1.0, &r),
+               CYC_E_DEGREE_TOO_HIGH);
+  CHECK_STATUS(ctx, cyc_blend_ringed(ctx, NULL, &e, 1, 0.0, 1.0, &r), CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed(ctx, &s, &e, 1, 0.0, 1.0, NULL), CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed(ctx, &s, &e, 1, 1.0, 0.0, &r), CYC_E_BAD_DOMAIN);
+  CHECK(r == SURF_SENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed(ctx, &s, &e, 1, 0.0, 1.0, &r), CYC_OK);
+  CHECK(r != SURF_SENT && r != NULL);
+
+  /* Canal blend K = 2 (G^1); K = 1 is refused. */
+  CHECK_STATUS(ctx, cyc_blend_canal(ctx, &s, &e, 1, 0.0, 1.0, &c), CYC_E_INVALID_ARGUMENT);
+  CHECK(c == SURF_SENT);
+  CHECK_STATUS(ctx, cyc_blend_canal(ctx, &s, &e, 2, 0.0, 1.0, &c), CYC_OK);
+
+  /* Reports: NULLs and bad K leave *out untouched. */
+  memset(&R, 0x5a, sizeof R);
+  CHECK_STATUS(ctx, cyc_continuity_report(ctx, a, 1.0, 1.0, NULL, 0.0, 1, NULL, 16, &R),
+               CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_continuity_report(ctx, a, 1.0, 1.0, r, 0.0, -1, NULL, 16, &R),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_continuity_report(ctx, a, 1.0, 1.0, r, 0.0, 1, NULL, 0, &R),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_continuity_report(ctx, a, 1.0, 1.0, r, 0.0, 1, NULL, 16, NULL),
+               CYC_E_NULL_ARGUMENT);
+  CHECK(R.K == 0x5a5a5a5a);
+  if (r != SURF_SENT && r) {
+    CHECK_STATUS(ctx, cyc_continuity_report(ctx, a, 1.0, 1.0, r, 0.0, 1, NULL, 32, &R), CYC_OK);
+    CHECK(R.K == 1 && R.samples == 32);
+    CHECK(R.max_gap <= 1e-12 * R.point_scale && R.max_normal_angle <= 1e-9);
+    CHECK(R.circle_jump[0] <= 1e-9 && R.circle_jump[1] <= 1e-9);
+    CHECK_STATUS(ctx, cyc_continuity_report(ctx, b, 1.0, -1.0, r, 1.0, 1, NULL, 32, &R), CYC_OK);
+    CHECK(R.max_gap <= 1e-12 * R.point_scale && R.circle_jump[1] <= 1e-9);
+  }
+  if (c != SURF_SENT && c) {
+    CHECK_STATUS(ctx, cyc_continuity_report(ctx, a, 1.0, 1.0, c, 0.0, 2, NULL, 32, &R), CYC_OK);
+    CHECK(R.max_gap <= 1e-12 * R.point_scale && R.max_normal_angle <= 1e-9);
+  }
+  if (r != SURF_SENT) cyc_surface_destroy(ctx, r);
+  if (c != SURF_SENT) cyc_surface_destroy(ctx, c);
+  cyc_surface_destroy(ctx, a);
+  cyc_surface_destroy(ctx, b);
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -2227,6 +2323,7 @@ int main(void) {
     test_darboux(ctx);
     test_darboux_lines(ctx);
     test_classify(ctx);
+    test_blends(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

@@ -504,6 +504,80 @@ CYC_API int cyc_classify_line_two_points(cyc_context* ctx, const cyc_line* l1,
                                          const double p2[3], const double p3[3],
                                          cyc_lines_classification* out);
 
+/* ------------------------------------------------------------ blends */
+
+/* Blends of seed 000 §9 (SPEC.md "Blends"). Derivative orders up to
+ * CYC_MAX_BLEND_ORDER (the Hermite curves have degree 2K+1). */
+#define CYC_MAX_BLEND_ORDER 7
+
+/** d^l x/du^l (u, v) for l = 0..K, exact (Taylor-series frames through the
+ *  rotation formula), written to out[3*l .. 3*l+2] (capacity 3*(K+1)).
+ *  v may be +-infinity (the generator). CYC_E_INVALID_ARGUMENT for K < 0,
+ *  CYC_E_DEGREE_TOO_HIGH for K > CYC_MAX_BLEND_ORDER. Allocation-free; on
+ *  error nothing is written. */
+CYC_API int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surface, double u,
+                                      double v, int K, double* out);
+
+/** One end of a blend: the end circle u of `surface`, the circle parameters
+ *  v[j] of the chosen points (v[0], v[1] for canal blends; v[0..2] for
+ *  ringed blends) and lambda = du/dt, the chain-rule factor: the blend's
+ *  curves satisfy p_j^(l)(t_end) = lambda^l d^l x/du^l (u, v[j]). Its sign
+ *  is the direction (the blend continues the start surface and leads into
+ *  the end surface); lambda = 0 chooses +1 or -1 by the nearer end of the
+ *  surface's domain. */
+typedef struct cyc_blend_end {
+  const cyc_surface* surface;
+  double u;
+  double v[3];
+  double lambda;
+} cyc_blend_end;
+
+/** Canal blend (§9.1): two C^K Hermite curves (degree 2K+1) on [t0, t1]
+ *  through the points v[0], v[1] of both ends, then PRCS; class G^(K-1)
+ *  across the joins (Prop. 6). K in 2..CYC_MAX_BLEND_ORDER. Where the normal
+ *  planes M, N become (nearly) parallel on [t0, t1], CYC_E_DEPENDENT_PLANES
+ *  (the message names the blend parameter), and the other statuses of
+ *  cyc_prcs_create. Creation: allocates *out (destroy with
+ *  cyc_surface_destroy); *out is written only on success. */
+CYC_API int cyc_blend_canal(cyc_context* ctx, const cyc_blend_end* start,
+                            const cyc_blend_end* end, int K, double t0, double t1,
+                            cyc_surface** out);
+/** Ringed blend (§9.2): three C^K Hermite curves through v[0..2], then PRRS
+ *  (f = v); class C^K (Prop. 7). K in 1..CYC_MAX_BLEND_ORDER. Statuses of
+ *  cyc_prrs_create. */
+CYC_API int cyc_blend_ringed(cyc_context* ctx, const cyc_blend_end* start,
+                             const cyc_blend_end* end, int K, double t0, double t1,
+                             cyc_surface** out);
+
+/** Continuity of the join of surface a at u = ua and surface b at u = ub
+ *  along a common circle, at the points x_a(ua, va[i]) and their closest
+ *  points on b's circle. lambda = du_a/du_b. All jumps compare b's
+ *  derivatives with lambda^l times a's. */
+typedef struct cyc_continuity {
+  int K;                    /* orders 0..K compared */
+  int samples;
+  int singular_samples;     /* a normal undefined there (angle skipped) */
+  double max_gap;           /* max |x_a - x_b| */
+  double point_scale;       /* max |x|, radius: for relative gaps */
+  double max_normal_angle;  /* radians in [0, pi/2] between tangent planes */
+  /* max |d^l x_b - lambda^l d^l x_a| at corresponding points, and the
+   * largest norm of the two: C^K of the parameterizations (zero only where
+   * the circle parameterizations agree to order K). */
+  double point_jump[CYC_MAX_BLEND_ORDER + 1];
+  double point_scale_l[CYC_MAX_BLEND_ORDER + 1];
+  /* relative jump of the l-th u-derivative of the circle's center, unit
+   * normal and radius^2 (the largest): C^K of the surface up to a
+   * reparameterization of its circles (Prop. 7). */
+  double circle_jump[CYC_MAX_BLEND_ORDER + 1];
+} cyc_continuity;
+
+/** va: n >= 1 circle parameters of a (NULL: n parameters spread over the
+ *  whole circle). K in 0..CYC_MAX_BLEND_ORDER. Allocation-free; *out is
+ *  written only on success. */
+CYC_API int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua,
+                                  double lambda, const cyc_surface* b, double ub, int K,
+                                  const double* va, int n, cyc_continuity* out);
+
 /* ------------------------------------------------------------ optimizer */
 
 /** 1 if this build includes the Ceres-based optimizer tier, else 0. The

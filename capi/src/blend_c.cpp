@@ -1,0 +1,125 @@
+// The C entry points of blends (seed 000 §9): exact u-derivatives, canal
+// and ringed blends (creation tier: they allocate the surface handle) and
+// the continuity report (SPEC.md "Blends").
+#include "capi_internal.hpp"
+#include "cyclide/blend.hpp"
+
+using namespace cyclide;
+using namespace cyclide::capi;
+
+static_assert(CYC_MAX_BLEND_ORDER == kMaxBlendOrder, "blend order bound");
+
+namespace {
+
+Outcome check_order(const char* fn, int K, int lo) {
+  if (K < lo) return fail(CYC_E_INVALID_ARGUMENT, "%s: K = %d is below %d", fn, K, lo);
+  if (K > kMaxBlendOrder)
+    return fail(CYC_E_DEGREE_TOO_HIGH, "%s: K = %d exceeds CYC_MAX_BLEND_ORDER = %d", fn, K,
+                kMaxBlendOrder);
+  return ok();
+}
+
+BlendEnd end_of(const cyc_blend_end& e) {
+  BlendEnd b;
+  b.surface = &e.surface->surface;
+  b.u = e.u;
+  for (int j = 0; j < 3; ++j) b.v[j] = e.v[j];
+  b.lambda = e.lambda;
+  return b;
+}
+
+template <class Make>
+Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
+              const cyc_blend_end* end, int K, int lo, double t0, double t1, cyc_surface** out,
+              Make&& make) {
+  REQUIRE(start);
+  REQUIRE(end);
+  REQUIRE(start->surface);
+  REQUIRE(end->surface);
+  REQUIRE(out);
+  if (Outcome o = check_order(fn, K, lo); o.status) return o;
+  Surface S;
+  double bad_u = t0;
+  const Status s = make(end_of(*start), end_of(*end), K, t0, t1, S, &bad_u);
+  if (s != Status::ok) {
+    if (s == Status::dependent_planes || s == Status::zero_tangent ||
+        s == Status::collinear_points || s == Status::numerical_overflow ||
+        s == Status::singular_point || s == Status::degenerate_circle_parameter)
+      return from_core_at(fn, s, bad_u);
+    return from_core(fn, s);
+  }
+  return emit(fn, ctx, out, S);
+}
+
+}  // namespace
+
+extern "C" {
+
+int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surface, double u,
+                              double v, int K, double* out) {
+  const char* fn = "cyc_surface_derivatives_u";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    if (Outcome o = check_order(fn, K, 0); o.status) return o;
+    Vec3d d[kMaxBlendOrder + 1];
+    if (Status s = derivatives_u(surface->surface, u, v, K, d); s != Status::ok)
+      return from_core(fn, s);
+    for (int l = 0; l <= K; ++l) put3(out + 3 * l, d[l]);
+    return ok();
+  });
+}
+
+int cyc_blend_canal(cyc_context* ctx, const cyc_blend_end* start, const cyc_blend_end* end,
+                    int K, double t0, double t1, cyc_surface** out) {
+  const char* fn = "cyc_blend_canal";
+  return run(ctx, fn, [&] {
+    return blend(fn, ctx, start, end, K, 2, t0, t1, out,
+                 [](const BlendEnd& a, const BlendEnd& b, int k, double s0, double s1,
+                    Surface& S, double* bad) { return make_canal_blend(a, b, k, s0, s1, S, bad); });
+  });
+}
+
+int cyc_blend_ringed(cyc_context* ctx, const cyc_blend_end* start, const cyc_blend_end* end,
+                     int K, double t0, double t1, cyc_surface** out) {
+  const char* fn = "cyc_blend_ringed";
+  return run(ctx, fn, [&] {
+    return blend(fn, ctx, start, end, K, 1, t0, t1, out,
+                 [](const BlendEnd& a, const BlendEnd& b, int k, double s0, double s1,
+                    Surface& S, double* bad) { return make_ringed_blend(a, b, k, s0, s1, S, bad); });
+  });
+}
+
+int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua, double lambda,
+                          const cyc_surface* b, double ub, int K, const double* va, int n,
+                          cyc_continuity* out) {
+  const char* fn = "cyc_continuity_report";
+  return run(ctx, fn, [&] {
+    REQUIRE(a);
+    REQUIRE(b);
+    REQUIRE(out);
+    if (Outcome o = check_order(fn, K, 0); o.status) return o;
+    if (n < 1) return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d must be >= 1", fn, n);
+    ContinuityReport R;
+    if (Status s = continuity_report(a->surface, ua, lambda, b->surface, ub, K, va, n, R);
+        s != Status::ok)
+      return from_core(fn, s);
+    cyc_continuity C;
+    std::memset(&C, 0, sizeof C);
+    C.K = R.K;
+    C.samples = R.samples;
+    C.singular_samples = R.singular_samples;
+    C.max_gap = R.max_gap;
+    C.point_scale = R.point_scale;
+    C.max_normal_angle = R.max_normal_angle;
+    for (int l = 0; l <= kMaxBlendOrder; ++l) {
+      C.point_jump[l] = R.point_jump[l];
+      C.point_scale_l[l] = R.point_scale_l[l];
+      C.circle_jump[l] = R.circle_jump[l];
+    }
+    *out = C;
+    return ok();
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,89 @@
+// Blends of seed 000 §9 and the tools to verify them (SPEC.md "Blends"):
+// exact u-derivatives of surface points (§9.1 (i)), canal blends (§9.1,
+// PRCS of two C^K Hermite curves, G^(K-1) by Prop. 6), ringed blends (§9.2,
+// PRRS of three C^K Hermite curves, C^K by Prop. 7), and a continuity report
+// of a join between two surfaces along a common circle. Allocation-free.
+#pragma once
+
+#include "cyclide/hermite.hpp"
+#include "cyclide/surface.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+
+// Largest derivative order of derivatives_u and of blends (the Hermite
+// curves have degree 2K+1 <= kMaxCurveDegree).
+constexpr int kMaxBlendOrder = kMaxHermiteOrder;  // 7
+
+// out[l] = d^l x / du^l (u, v), l = 0..K (K <= kMaxBlendOrder), from the frame
+// as Taylor series of order K pushed through the rotation formula (no finite
+// differences). v may be any finite double or +-infinity (the generator).
+// On error nothing is written.
+Status derivatives_u(const Surface& S, double u, double v, int K, Vec3d* out);
+
+// One end of a blend: the end circle u of `surface`, the circle parameters
+// of the chosen points P_j = x(u, v[j]) (2 for canal, 3 for ringed blends),
+// and the chain-rule factor lambda = du/dt of the input per unit of the
+// blend parameter t: the blend's curves satisfy
+//   p_j^(l)(t_end) = lambda^l d^l x / du^l (u, v[j]),  l = 0..K.
+// lambda's sign is the direction: the blend must continue the first surface
+// (lambda > 0 if u is its domain's upper end) and lead into the second
+// (lambda > 0 if u is its domain's lower end). lambda = 0 chooses +-1 that way
+// (by the nearer end of the domain).
+struct BlendEnd {
+  const Surface* surface = nullptr;
+  double u = 0.0;
+  double v[3] = {0.0, 0.0, 0.0};
+  double lambda = 0.0;
+};
+
+// The lambda used for end `e` (index 0: the blend's start, 1: its end).
+double blend_lambda(const BlendEnd& e, int index);
+
+// Canal blend (§9.1): K >= 2 (Prop. 6), Hermite curves of degree 2K+1 on
+// [t0, t1] through P_1j -> P_2j (j = 1, 2), then make_prcs. Statuses of
+// make_prcs are passed on with *bad_u (e.g. dependent_planes where the normal
+// planes M, N are (nearly) parallel, the weakness the paper names).
+// `curves` (may be null) receives the two Hermite curves.
+Status make_canal_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
+                        double t1, Surface& out, double* bad_u = nullptr,
+                        RationalCurve* curves = nullptr);
+// Ringed blend (§9.2): K >= 1, three Hermite curves, then make_prrs (f = v).
+Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
+                         double t1, Surface& out, double* bad_u = nullptr,
+                         RationalCurve* curves = nullptr);
+
+// The join of surface A at u = uA and surface B at u = uB along a common
+// circle, at sample points x_A(uA, vA[i]); the corresponding point of B is
+// the closest point of B's circle (vB = B.parameter_of). lambda is the
+// chain-rule factor du_A/du_B: B's u-derivatives are compared with
+// lambda^l times A's.
+struct ContinuityReport {
+  int K = 0;                 // derivative orders compared: 0..K
+  int samples = 0;
+  int singular_samples = 0;  // samples where a normal is undefined (skipped)
+  double max_gap = 0;        // max |x_A - x_B| at corresponding points
+  double point_scale = 0;    // max |x_A|, circle radius (for relative gaps)
+  double max_normal_angle = 0;  // radians in [0, pi/2]: angle between tangent planes
+  // Parameterization jumps: max |d^l x_B/du^l - lambda^l d^l x_A/du^l| at
+  // corresponding points, and the largest of the two norms (relative: the
+  // quotient). Zero (C^K in the usual sense) only where the circle
+  // parameterizations of A and B agree to order K, e.g. at a blend's
+  // generator point.
+  double point_jump[kMaxBlendOrder + 1] = {};
+  double point_scale_l[kMaxBlendOrder + 1] = {};
+  // Circle-family jumps: the l-th u-derivatives of the circle's center,
+  // unit plane normal (oriented like A's) and radius^2, relative to their
+  // magnitudes (center: |c| + radius, normal: 1, radius^2: radius^2), the
+  // largest of the three. Zero to order k means the surfaces join C^k up to
+  // a reparameterization of the circles (geometric C^k, Prop. 7).
+  double circle_jump[kMaxBlendOrder + 1] = {};
+};
+
+// vA: n >= 1 sample parameters on A's circle (null: n parameters
+// v = tan(pi (i + 1/2)/n - pi/2), which cover the whole circle). K <= kMaxBlendOrder.
+Status continuity_report(const Surface& A, double uA, double lambda, const Surface& B,
+                         double uB, int K, const double* vA, int n, ContinuityReport& out);
+
+}  // namespace v0
+}  // namespace cyclide

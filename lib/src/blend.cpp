@@ -1,0 +1,255 @@
+#include "cyclide/blend.hpp"
+
+#include <cmath>
+#include <type_traits>
+#include <utility>
+
+namespace cyclide {
+inline namespace v0 {
+
+namespace {
+
+// Calls fn(std::integral_constant<int, N>) for N = K (0 <= K <= kMaxBlendOrder).
+template <class Fn>
+Status with_order(int K, Fn&& fn) {
+  switch (K) {
+    case 0: return fn(std::integral_constant<int, 0>());
+    case 1: return fn(std::integral_constant<int, 1>());
+    case 2: return fn(std::integral_constant<int, 2>());
+    case 3: return fn(std::integral_constant<int, 3>());
+    case 4: return fn(std::integral_constant<int, 4>());
+    case 5: return fn(std::integral_constant<int, 5>());
+    case 6: return fn(std::integral_constant<int, 6>());
+    case 7: return fn(std::integral_constant<int, 7>());
+    default: return Status::degree_too_high;
+  }
+}
+static_assert(kMaxBlendOrder == 7, "with_order covers 0..7");
+
+bool finite3(const Vec3d& x) {
+  return std::isfinite(x.x()) && std::isfinite(x.y()) && std::isfinite(x.z());
+}
+
+// x(u, v) as a u-series of order N: eqs. (11)/(27) expanded as in
+// evaluator.hpp, on series. (s1, s0) = (v, 1) for |v| <= 1, (1, 1/v) else.
+template <int N>
+Status point_series(const Surface& S, double u, double v, Vec3<Taylor<double, N>>& x) {
+  using T = Taylor<double, N>;
+  CircleFrame<T> F;
+  if (Status st = S.frame<N>(u, F); st != Status::ok) return st;
+  const bool small = std::abs(v) <= 1.0;
+  const T s1(small ? v : 1.0), s0(small ? 1.0 : 1.0 / v);
+  const T W = F.alpha * s1 + F.beta * s0, G = F.gamma * s1 + F.delta * s0;
+  const Vec3<T> d = F.p - F.o;
+  const T aa = F.a.dot(F.a), ad = F.a.dot(d);
+  const Vec3<T> axd = F.a.cross(d);
+  const T W2 = W * W, G2 = G * G, two(2.0);
+  const T den = W2 + G2 * aa;
+  if (!(den.c[0] > 0)) return Status::degenerate_circle_parameter;
+  const Vec3<T> num = (W2 - G2 * aa) * d + (two * G2 * ad) * F.a + (two * W * G) * axd;
+  for (int j = 0; j < 3; ++j) x[j] = F.o[j] + num[j] / den;
+  return Status::ok;
+}
+
+// Circle geometry as u-series: center, unit normal, radius^2.
+template <int N>
+Status circle_series(const Surface& S, double u, Vec3<Taylor<double, N>>& c,
+                     Vec3<Taylor<double, N>>& n, Taylor<double, N>& r2) {
+  using T = Taylor<double, N>;
+  CircleFrame<T> F;
+  if (Status st = S.frame<N>(u, F); st != Status::ok) return st;
+  const CircleGeometry<T> G = circle_geometry(F);
+  const T len = sqrt(F.a.dot(F.a));
+  c = G.center;
+  for (int j = 0; j < 3; ++j) n[j] = F.a[j] / len;
+  r2 = G.radius2;
+  return Status::ok;
+}
+
+// l-th derivative of a series (0 <= l <= N; written without
+// Taylor::derivative, whose bounds GCC cannot see through the dispatch).
+template <int N>
+double deriv(const Taylor<double, N>& t, int l) {
+  double f = 1.0, r = 0.0;
+  for (int k = 0; k <= N; ++k) {
+    if (k > 1) f *= double(k);
+    if (k == l) r = f * t.c[k];
+  }
+  return r;
+}
+
+template <int N>
+Vec3d coeff(const Vec3<Taylor<double, N>>& x, int l) {
+  return Vec3d(deriv(x[0], l), deriv(x[1], l), deriv(x[2], l));
+}
+
+}  // namespace
+
+Status derivatives_u(const Surface& S, double u, double v, int K, Vec3d* out) {
+  if (!out) return Status::null_argument;
+  if (K < 0) return Status::invalid_argument;
+  if (K > kMaxBlendOrder) return Status::degree_too_high;
+  if (!input_ok(u) || std::isnan(v)) return Status::not_finite;
+  Vec3d tmp[kMaxBlendOrder + 1];
+  const Status st = with_order(K, [&](auto n) -> Status {
+    constexpr int N = decltype(n)::value;
+    Vec3<Taylor<double, N>> x;
+    if (Status s = point_series<N>(S, u, v, x); s != Status::ok) return s;
+    for (int l = 0; l <= N; ++l) {
+      tmp[l] = coeff(x, l);
+      if (!finite3(tmp[l])) return Status::numerical_overflow;
+    }
+    return Status::ok;
+  });
+  if (st != Status::ok) return st;
+  for (int l = 0; l <= K; ++l) out[l] = tmp[l];
+  return Status::ok;
+}
+
+double blend_lambda(const BlendEnd& e, int index) {
+  if (e.lambda != 0.0 || !e.surface) return e.lambda;
+  const double to_upper = std::abs(e.surface->u1 - e.u), to_lower = std::abs(e.u - e.surface->u0);
+  // Start: continue the surface (forward if u is its upper end); end: lead
+  // into it (forward if u is its lower end).
+  if (index == 0) return to_upper <= to_lower ? 1.0 : -1.0;
+  return to_lower <= to_upper ? 1.0 : -1.0;
+}
+
+namespace {
+
+Status blend_curves(const BlendEnd& start, const BlendEnd& end, int K, double t0, double t1,
+                    int count, RationalCurve* curves) {
+  if (!start.surface || !end.surface) return Status::null_argument;
+  if (K > kMaxBlendOrder) return Status::degree_too_high;
+  if (!input_ok(start.u) || !input_ok(end.u) || !input_ok(t0) || !input_ok(t1) ||
+      !input_ok(start.lambda) || !input_ok(end.lambda))
+    return Status::not_finite;
+  if (!(t1 > t0)) return Status::bad_domain;
+  for (int j = 0; j < count; ++j)
+    if (std::isnan(start.v[j]) || std::isnan(end.v[j])) return Status::not_finite;
+  const BlendEnd* ends[2] = {&start, &end};
+  Vec3d d[2][3][kMaxBlendOrder + 1];
+  for (int e = 0; e < 2; ++e) {
+    const double lambda = blend_lambda(*ends[e], e);
+    for (int j = 0; j < count; ++j) {
+      if (Status st = derivatives_u(*ends[e]->surface, ends[e]->u, ends[e]->v[j], K, d[e][j]);
+          st != Status::ok)
+        return st;
+      double f = 1.0;
+      for (int l = 1; l <= K; ++l) {
+        f *= lambda;
+        d[e][j][l] *= f;
+      }
+    }
+  }
+  for (int j = 0; j < count; ++j)
+    if (Status st = make_hermite_curve(K, t0, t1, d[0][j], d[1][j], curves[j]); st != Status::ok)
+      return st;
+  return Status::ok;
+}
+
+}  // namespace
+
+Status make_canal_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
+                        double t1, Surface& out, double* bad_u, RationalCurve* curves) {
+  if (K < 2) return Status::invalid_argument;  // Prop. 6: K > 1
+  RationalCurve p[2];
+  if (Status st = blend_curves(start, end, K, t0, t1, 2, p); st != Status::ok) return st;
+  Surface S;
+  if (Status st = make_prcs(p[0], p[1], nullptr, t0, t1, S, bad_u); st != Status::ok) return st;
+  out = S;
+  if (curves)
+    for (int j = 0; j < 2; ++j) curves[j] = p[j];
+  return Status::ok;
+}
+
+Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
+                         double t1, Surface& out, double* bad_u, RationalCurve* curves) {
+  if (K < 1) return Status::invalid_argument;  // §9.2: K >= 1
+  RationalCurve p[3];
+  if (Status st = blend_curves(start, end, K, t0, t1, 3, p); st != Status::ok) return st;
+  Surface S;
+  if (Status st = make_prrs(p[0], p[1], p[2], nullptr, t0, t1, S, bad_u); st != Status::ok)
+    return st;
+  out = S;
+  if (curves)
+    for (int j = 0; j < 3; ++j) curves[j] = p[j];
+  return Status::ok;
+}
+
+Status continuity_report(const Surface& A, double uA, double lambda, const Surface& B,
+                         double uB, int K, const double* vA, int n, ContinuityReport& out) {
+  if (K < 0 || n < 1) return Status::invalid_argument;
+  if (K > kMaxBlendOrder) return Status::degree_too_high;
+  if (!input_ok(uA) || !input_ok(uB) || !input_ok(lambda)) return Status::not_finite;
+  if (vA)
+    for (int i = 0; i < n; ++i)
+      if (std::isnan(vA[i])) return Status::not_finite;
+  ContinuityReport R;
+  R.K = K;
+  R.samples = n;
+  double lpow[kMaxBlendOrder + 1];
+  lpow[0] = 1.0;
+  for (int l = 1; l <= K; ++l) lpow[l] = lpow[l - 1] * lambda;
+
+  // The circle families.
+  const Status cs = with_order(K, [&](auto order) -> Status {
+    constexpr int N = decltype(order)::value;
+    Vec3<Taylor<double, N>> ca, na, cb, nb;
+    Taylor<double, N> ra, rb;
+    if (Status s = circle_series<N>(A, uA, ca, na, ra); s != Status::ok) return s;
+    if (Status s = circle_series<N>(B, uB, cb, nb, rb); s != Status::ok) return s;
+    const double sign = coeff(na, 0).dot(coeff(nb, 0)) < 0 ? -1.0 : 1.0;
+    const double rad2 = std::abs(ra.c[0]);
+    const double cscale = coeff(ca, 0).norm() + std::sqrt(rad2);
+    for (int l = 0; l <= N; ++l) {
+      const double jc = (coeff(cb, l) - lpow[l] * coeff(ca, l)).norm() / cscale;
+      const double jn = (sign * coeff(nb, l) - lpow[l] * coeff(na, l)).norm();
+      const double jr = std::abs(deriv(rb, l) - lpow[l] * deriv(ra, l)) / rad2;
+      R.circle_jump[l] = std::max(jc, std::max(jn, jr));
+      if (!std::isfinite(R.circle_jump[l])) return Status::numerical_overflow;
+    }
+    R.point_scale = std::sqrt(rad2);
+    return Status::ok;
+  });
+  if (cs != Status::ok) return cs;
+
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < n; ++i) {
+    const double v = vA ? vA[i] : std::tan(pi * (i + 0.5) / n - pi / 2);
+    Vec3d da[kMaxBlendOrder + 1], db[kMaxBlendOrder + 1];
+    if (Status s = derivatives_u(A, uA, v, K, da); s != Status::ok) return s;
+    double vb = 0;
+    if (Status s = B.parameter_of(uB, da[0], vb); s != Status::ok) return s;
+    if (Status s = derivatives_u(B, uB, vb, K, db); s != Status::ok) return s;
+    R.point_scale = std::max(R.point_scale, std::max(da[0].norm(), db[0].norm()));
+    R.max_gap = std::max(R.max_gap, (da[0] - db[0]).norm());
+    for (int l = 0; l <= K; ++l) {
+      const Vec3d a = lpow[l] * da[l];
+      R.point_jump[l] = std::max(R.point_jump[l], (db[l] - a).norm());
+      R.point_scale_l[l] = std::max(R.point_scale_l[l], std::max(a.norm(), db[l].norm()));
+    }
+    // Normals (eval wants finite v: 1e300 is the generator to rounding).
+    auto fin = [](double w) { return std::isfinite(w) ? w : std::copysign(1e300, w); };
+    double na[3], nb[3];
+    EvalOut oa, ob;
+    oa.normal = na;
+    ob.normal = nb;
+    const Status sa = A.eval(uA, fin(v), oa);
+    const Status sb = B.eval(uB, fin(vb), ob);
+    if (sa == Status::singular_point || sb == Status::singular_point) {
+      ++R.singular_samples;
+      continue;
+    }
+    if (sa != Status::ok) return sa;
+    if (sb != Status::ok) return sb;
+    const Vec3d a(na[0], na[1], na[2]), b(nb[0], nb[1], nb[2]);
+    R.max_normal_angle =
+        std::max(R.max_normal_angle, std::atan2(a.cross(b).norm(), std::abs(a.dot(b))));
+  }
+  out = R;
+  return Status::ok;
+}
+
+}  // namespace v0
+}  // namespace cyclide

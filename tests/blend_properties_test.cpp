@@ -1,0 +1,119 @@
+// RapidCheck properties of blends (labels "property;blend"): over random
+// pairs of surfaces (PRRS of three random lines, PRCS of two random lines,
+// the second moved apart), a blend either is built and joins both end
+// circles (gap), C^K in the circle family (ringed, Prop. 7) or G^1 (canal,
+// Prop. 6), or is refused with one of the documented degenerate statuses.
+// Tolerances are relative; cases whose continuity report shows a badly
+// conditioned join (huge derivative scales) are discarded with RC_PRE.
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+
+#include "cyclide/blend.hpp"
+
+using namespace cyclide;
+
+namespace {
+
+constexpr double kGapTol = 1e-8;      // relative to the point scale
+constexpr double kAngleTol = 1e-5;    // radians (near-singular ringed points)
+constexpr double kCircleTol = 1e-5;   // relative circle-family jumps
+
+double dyadic() { return *rc::gen::inRange(-64, 65) / 32.0; }
+Vec3d dyadic3() { return Vec3d(dyadic(), dyadic(), dyadic()); }
+
+bool degenerate(Status s) {
+  return s == Status::dependent_planes || s == Status::zero_tangent ||
+         s == Status::collinear_points || s == Status::singular_point ||
+         s == Status::numerical_overflow || s == Status::degenerate_circle_parameter;
+}
+
+// PRRS of three random lines, or PRCS of two; shifted by `offset`.
+bool random_surface(bool canal, const Vec3d& offset, Surface& S) {
+  RationalCurve L[3];
+  for (int k = 0; k < (canal ? 2 : 3); ++k) {
+    Vec3d d = dyadic3();
+    if (d.norm() < 0.25) return false;
+    if (make_line(dyadic3() + offset, d, L[k]) != Status::ok) return false;
+  }
+  const Status st = canal ? make_prcs(L[0], L[1], nullptr, 0.0, 1.0, S)
+                          : make_prrs(L[0], L[1], L[2], nullptr, 0.0, 1.0, S);
+  return st == Status::ok;
+}
+
+double random_v() {
+  const int k = *rc::gen::inRange(0, 9);
+  return k == 0 ? HUGE_VAL : std::tan(*rc::gen::inRange(-150, 151) / 100.0);
+}
+
+void check_join(const Surface& In, double u, double lambda, const Surface& X, double t, int K,
+                bool canal) {
+  ContinuityReport R;
+  const Status st = continuity_report(In, u, lambda, X, t, K, nullptr, 24, R);
+  RC_PRE(st == Status::ok);
+  // Badly conditioned joins (derivatives 1e6 times the geometry) are discarded.
+  for (int l = 1; l <= K; ++l) RC_PRE(R.point_scale_l[l] <= 1e6 * std::max(1.0, R.point_scale));
+  RC_ASSERT(R.max_gap <= kGapTol * R.point_scale);
+  if (R.singular_samples == 0) RC_ASSERT(R.max_normal_angle <= kAngleTol);
+  const int top = canal ? 0 : K;  // canal: circles match to order K-2 (K = 2: 0)
+  for (int l = 0; l <= top; ++l) RC_ASSERT(R.circle_jump[l] <= kCircleTol);
+}
+
+}  // namespace
+
+RC_GTEST_PROP(BlendProperties, RingedBlendIsCKOrDegenerate, ()) {
+  Surface A, B;
+  RC_PRE(random_surface(false, Vec3d(0, 0, 0), A));
+  RC_PRE(random_surface(false, Vec3d(6, 1, 0), B));
+  const int K = *rc::gen::inRange(1, 4);
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  e.surface = &B;
+  e.u = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    s.v[j] = random_v();
+    e.v[j] = random_v();
+  }
+  Surface X;
+  double bad = -1;
+  const Status st = make_ringed_blend(s, e, K, 0.0, 1.0, X, &bad);
+  if (st != Status::ok) {
+    RC_ASSERT(degenerate(st));
+    RC_TAG("degenerate");
+    RC_SUCCEED("refused with a documented status");
+  }
+  check_join(A, 1.0, 1.0, X, 0.0, K, false);
+  check_join(B, 0.0, 1.0, X, 1.0, K, false);
+}
+
+RC_GTEST_PROP(BlendProperties, CanalBlendIsG1OrDegenerate, ()) {
+  Surface A, B;
+  RC_PRE(random_surface(true, Vec3d(0, 0, 0), A));
+  RC_PRE(random_surface(true, Vec3d(6, 1, 0), B));
+  const int K = *rc::gen::inRange(2, 4);
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  e.surface = &B;
+  e.u = 0.0;
+  for (int j = 0; j < 2; ++j) {
+    s.v[j] = random_v();
+    e.v[j] = random_v();
+  }
+  RC_PRE(s.v[0] != s.v[1] && e.v[0] != e.v[1]);
+  Surface X;
+  double bad = -1;
+  const Status st = make_canal_blend(s, e, K, 0.0, 1.0, X, &bad);
+  if (st != Status::ok) {
+    RC_ASSERT(degenerate(st));
+    RC_ASSERT(bad >= 0.0 && bad <= 1.0);
+    RC_TAG("degenerate");
+    RC_SUCCEED("refused with a documented status");
+  }
+  check_join(A, 1.0, 1.0, X, 0.0, K, true);
+  check_join(B, 0.0, 1.0, X, 1.0, K, true);
+}

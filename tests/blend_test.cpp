@@ -1,0 +1,236 @@
+// Blends of seed 000 §9 (labels "paper;blend"): exact u-derivatives of
+// surface points, the Fig. 6 situation (two quadratic cones joined by a C^1
+// ringed blend through cubic curves), canal blends (G^(K-1), Prop. 6) and
+// their weakness (parallel normal planes, reported as a status), and the
+// continuity report of a join.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cyclide/blend.hpp"
+
+using namespace cyclide;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+// PRRS of three lines A + u R d_k through the apex A, d_k = (cos, sin, 1)
+// in the frame (e1, e2, e3): a circular quadratic cone with axis e3.
+Surface cone(const Vec3d& A, const Vec3d& e1, const Vec3d& e2, const Vec3d& e3, double u0,
+             double u1) {
+  RationalCurve L[3];
+  for (int k = 0; k < 3; ++k) {
+    const double t = 2 * kPi * k / 3 + 0.3;
+    EXPECT_EQ(make_line(A, std::cos(t) * e1 + std::sin(t) * e2 + e3, L[k]), Status::ok);
+  }
+  Surface S;
+  EXPECT_EQ(make_prrs(L[0], L[1], L[2], nullptr, u0, u1, S), Status::ok);
+  return S;
+}
+
+Surface cone1() { return cone({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.5, 1.0); }
+// Axis -x, apex (4, 0, 4): its wide end circle (u = 1) faces cone1's.
+Surface cone2() { return cone({4, 0, 4}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, 0.5, 1.0); }
+
+// A PRCS surface of two cubic curves (generic canal surface).
+Surface canal() {
+  const double c1[12] = {0, 0, 0, 1, 0.2, 0, 0, 0.5, 0.1, 0.05, 0, 0};
+  const double c2[12] = {0, 1, 0.5, 1, -0.1, 0.3, 0.2, 0, 0, 0, 0.1, 0};
+  RationalCurve p1, p2;
+  EXPECT_EQ(make_polynomial_curve(3, c1, p1), Status::ok);
+  EXPECT_EQ(make_polynomial_curve(3, c2, p2), Status::ok);
+  Surface S;
+  EXPECT_EQ(make_prcs(p1, p2, nullptr, 0.0, 1.0, S), Status::ok);
+  return S;
+}
+
+double rel(const Vec3d& a, const Vec3d& b) {
+  return (a - b).norm() / std::max(1.0, std::max(a.norm(), b.norm()));
+}
+
+}  // namespace
+
+TEST(Derivatives, MatchEvalAndFiniteDifferences) {
+  for (const Surface& S : {cone1(), canal()}) {
+    for (double u : {0.55, 0.7, 0.9}) {
+      for (double v : {-3.0, -0.4, 0.0, 0.8, 2.5, 1e300, HUGE_VAL}) {
+        Vec3d d[kMaxBlendOrder + 1];
+        ASSERT_EQ(derivatives_u(S, u, v, 0, d), Status::ok);
+        double x[3], xu[3];
+        EvalOut o;
+        o.point = x;
+        o.du = xu;
+        ASSERT_EQ(S.eval(u, std::isfinite(v) ? v : 1e300, o), Status::ok);
+        EXPECT_LT(rel(d[0], Vec3d(x[0], x[1], x[2])), 1e-12);
+        ASSERT_EQ(derivatives_u(S, u, v, kMaxBlendOrder, d), Status::ok);
+        EXPECT_LT(rel(d[1], Vec3d(xu[0], xu[1], xu[2])), 1e-12) << u << " " << v;
+        // Central differences of order l-1 give order l.
+        const double h = 1e-5;
+        for (int l = 1; l <= 4; ++l) {
+          Vec3d dp[kMaxBlendOrder + 1], dm[kMaxBlendOrder + 1];
+          ASSERT_EQ(derivatives_u(S, u + h, v, l - 1, dp), Status::ok);
+          ASSERT_EQ(derivatives_u(S, u - h, v, l - 1, dm), Status::ok);
+          const Vec3d fd = (dp[l - 1] - dm[l - 1]) / (2 * h);
+          EXPECT_LT((fd - d[l]).norm() / std::max(1.0, d[l].norm()), 1e-6) << l;
+        }
+      }
+    }
+  }
+}
+
+TEST(Derivatives, Validation) {
+  const Surface S = cone1();
+  Vec3d d[kMaxBlendOrder + 2];
+  d[0] = Vec3d(7, 7, 7);
+  EXPECT_EQ(derivatives_u(S, 0.7, 0.0, -1, d), Status::invalid_argument);
+  EXPECT_EQ(derivatives_u(S, 0.7, 0.0, kMaxBlendOrder + 1, d), Status::degree_too_high);
+  EXPECT_EQ(derivatives_u(S, NAN, 0.0, 1, d), Status::not_finite);
+  EXPECT_EQ(derivatives_u(S, 0.7, NAN, 1, d), Status::not_finite);
+  EXPECT_EQ(derivatives_u(S, 0.7, 0.0, 1, nullptr), Status::null_argument);
+  EXPECT_EQ(d[0], Vec3d(7, 7, 7));
+}
+
+// Fig. 6: two quadratic cones, C^1 ringed blend through three cubic curves.
+TEST(RingedBlend, Figure6ConesC1AndHigherOrders) {
+  const Surface A = cone1(), B = cone2();
+  for (int K = 1; K <= 3; ++K) {
+    BlendEnd s, e;
+    s.surface = &A;
+    s.u = 1.0;  // upper end: lambda = +1 (continue A)
+    e.surface = &B;
+    e.u = 1.0;  // upper end: lambda = -1 (lead into B towards its apex)
+    const double vs[3] = {HUGE_VAL, -0.5, 0.7};
+    for (int j = 0; j < 3; ++j) s.v[j] = e.v[j] = vs[j];
+    EXPECT_EQ(blend_lambda(s, 0), 1.0);
+    EXPECT_EQ(blend_lambda(e, 1), -1.0);
+    Surface X;
+    RationalCurve p[3];
+    double bad = -1;
+    ASSERT_EQ(make_ringed_blend(s, e, K, 0.0, 1.0, X, &bad, p), Status::ok) << K << " " << bad;
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(p[j].degree(), 2 * K + 1);
+    // Both joins: gap, C^K of the circle family, C^K at the generator point
+    // (where the two v-parameterizations agree), tangent planes.
+    struct Join {
+      const Surface* S;
+      double u, lambda, t;
+    } joins[2] = {{&A, 1.0, 1.0, 0.0}, {&B, 1.0, -1.0, 1.0}};
+    for (const Join& J : joins) {
+      ContinuityReport R;
+      ASSERT_EQ(continuity_report(*J.S, J.u, J.lambda, X, J.t, K, nullptr, 64, R), Status::ok);
+      EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+      EXPECT_LE(R.max_normal_angle, 1e-9);
+      for (int l = 0; l <= K; ++l) EXPECT_LE(R.circle_jump[l], 1e-9) << "K " << K << " l " << l;
+      ContinuityReport G;  // at the generator only
+      const double vg = HUGE_VAL;
+      ASSERT_EQ(continuity_report(*J.S, J.u, J.lambda, X, J.t, K, &vg, 1, G), Status::ok);
+      for (int l = 0; l <= K; ++l)
+        EXPECT_LE(G.point_jump[l], 1e-9 * std::max(G.point_scale_l[l], G.point_scale)) << "K " << K << " l " << l;
+      // Order K+1 is generically not continuous (the report sees it).
+      if (K < kMaxBlendOrder) {
+        ContinuityReport H;
+        ASSERT_EQ(continuity_report(*J.S, J.u, J.lambda, X, J.t, K + 1, nullptr, 16, H),
+                  Status::ok);
+        EXPECT_GT(H.circle_jump[K + 1], 1e-6);
+      }
+    }
+  }
+}
+
+TEST(CanalBlend, K2IsG1) {
+  const Surface A = cone1(), B = cone2();
+  for (int K = 2; K <= 3; ++K) {
+    BlendEnd s, e;
+    s.surface = &A;
+    s.u = 1.0;
+    e.surface = &B;
+    e.u = 1.0;
+    s.v[0] = e.v[0] = HUGE_VAL;
+    s.v[1] = e.v[1] = 0.3;
+    Surface X;
+    double bad = -1;
+    ASSERT_EQ(make_canal_blend(s, e, K, 0.0, 1.0, X, &bad), Status::ok) << bad;
+    const double lam[2] = {1.0, -1.0};
+    const Surface* in[2] = {&A, &B};
+    for (int i = 0; i < 2; ++i) {
+      ContinuityReport R;
+      ASSERT_EQ(continuity_report(*in[i], 1.0, lam[i], X, double(i), K, nullptr, 64, R),
+                Status::ok);
+      EXPECT_LE(R.max_gap, 1e-12 * R.point_scale) << K;
+      EXPECT_LE(R.max_normal_angle, 1e-9) << K;  // G^1 (Prop. 6)
+      EXPECT_LE(R.circle_jump[0], 1e-9);
+    }
+    double res = 1;
+    ASSERT_EQ(X.canal_test(res), Status::ok);
+    EXPECT_LT(res, 1e-9);
+  }
+}
+
+// The weakness of §9.1: two coaxial cylinders and antipodal points give
+// normal planes M, N that coincide (p1' = p2' along the axis).
+TEST(CanalBlend, ParallelPlanesReported) {
+  RationalCurve L[3], M[3];
+  for (int k = 0; k < 3; ++k) {
+    const double t = 2 * kPi * k / 3;
+    ASSERT_EQ(make_line({std::cos(t), std::sin(t), 0}, {0, 0, 1}, L[k]), Status::ok);
+    ASSERT_EQ(make_line({std::cos(t), std::sin(t), 3}, {0, 0, 1}, M[k]), Status::ok);
+  }
+  Surface A, B;
+  ASSERT_EQ(make_prrs(L[0], L[1], L[2], nullptr, 0.0, 1.0, A), Status::ok);
+  ASSERT_EQ(make_prrs(M[0], M[1], M[2], nullptr, 0.0, 1.0, B), Status::ok);
+  double va = 0, vb = 0;
+  ASSERT_EQ(A.parameter_of(1.0, Vec3d(-1, 0, 1), va), Status::ok);
+  ASSERT_EQ(B.parameter_of(0.0, Vec3d(-1, 0, 3), vb), Status::ok);
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  s.v[0] = HUGE_VAL;
+  s.v[1] = va;
+  e.surface = &B;
+  e.u = 0.0;
+  e.v[0] = HUGE_VAL;
+  e.v[1] = vb;
+  Surface X, untouched;
+  untouched.u1 = 42;
+  X = untouched;
+  double bad = -1;
+  EXPECT_EQ(make_canal_blend(s, e, 2, 0.0, 1.0, X, &bad), Status::dependent_planes);
+  EXPECT_GE(bad, 0.0);
+  EXPECT_LE(bad, 1.0);
+  EXPECT_EQ(X.u1, 42);
+  // The ringed blend of the same data is fine (a cylinder piece).
+  s.v[2] = e.v[2] = 0.5;
+  Surface Y;
+  EXPECT_EQ(make_ringed_blend(s, e, 2, 0.0, 1.0, Y), Status::ok);
+}
+
+TEST(Blend, Validation) {
+  const Surface A = cone1(), B = cone2();
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  e.surface = &B;
+  e.u = 1.0;
+  s.v[1] = e.v[1] = 0.5;
+  s.v[2] = e.v[2] = -0.5;
+  Surface X;
+  EXPECT_EQ(make_canal_blend(s, e, 1, 0, 1, X), Status::invalid_argument);
+  EXPECT_EQ(make_ringed_blend(s, e, 0, 0, 1, X), Status::invalid_argument);
+  EXPECT_EQ(make_ringed_blend(s, e, kMaxBlendOrder + 1, 0, 1, X), Status::degree_too_high);
+  EXPECT_EQ(make_ringed_blend(s, e, 1, 1, 0, X), Status::bad_domain);
+  BlendEnd n = s;
+  n.surface = nullptr;
+  EXPECT_EQ(make_ringed_blend(n, e, 1, 0, 1, X), Status::null_argument);
+  n = s;
+  n.v[1] = NAN;
+  EXPECT_EQ(make_ringed_blend(n, e, 1, 0, 1, X), Status::not_finite);
+  // Three points of which two coincide: the PRRS planes are dependent.
+  n = s;
+  n.v[2] = n.v[1];
+  EXPECT_NE(make_ringed_blend(n, e, 1, 0, 1, X), Status::ok);
+  ContinuityReport R;
+  EXPECT_EQ(continuity_report(A, 1, 1, B, 1, -1, nullptr, 4, R), Status::invalid_argument);
+  EXPECT_EQ(continuity_report(A, 1, 1, B, 1, 1, nullptr, 0, R), Status::invalid_argument);
+  EXPECT_EQ(continuity_report(A, 1, 1, B, 1, 8, nullptr, 4, R), Status::degree_too_high);
+}
