@@ -604,7 +604,9 @@ TEST_F(AllocFree, DarbouxInversionAndDcmc) {
   cyc_circle_or_line c2;
   double n[3], value = 0, grad[3], x[3] = {0.5, -0.25, 1.0}, y[3], p[3], pu[3], pv[3], pn[3];
   int type = -1, bad = 0;
-  double gu[2] = {0.1, 0.2}, gv[100], gpts[600], gnrm[600];
+  double gu[2] = {0.1, 0.2}, gv[100], gpts[600], gnrm[600], derivs[12];
+  const double cv[4] = {-1, 0, 0.5, 3};
+  cyc_continuity cont;
   for (int j = 0; j < 100; ++j) gv[j] = 0.05 * j - 2.5;
   const cyc_buffer3 gp = {gpts, 200, 3}, gn = {gnrm, 200, 3};
   const Heap h = measure([&] {
@@ -618,6 +620,9 @@ TEST_F(AllocFree, DarbouxInversionAndDcmc) {
       bad += cyc_invert_circle(ctx, &inv, &circle, &c2) != CYC_OK;
       bad += cyc_surface_eval_inverted(ctx, prcs, &inv, 0.3, 0.1 * r, p, pu, pv, pn) != CYC_OK;
       bad += cyc_surface_circle_inverted(ctx, prcs, &inv, 0.3, &c2) != CYC_OK;
+      // Blends (issue 4): end-circle derivatives and the continuity report.
+      bad += cyc_surface_derivatives_u(ctx, prcs, 0.3, 0.1 * r, 3, derivs) != CYC_OK;
+      bad += cyc_continuity_report(ctx, prcs, 0.3, 1.0, prcs, 0.3, 2, cv, 4, &cont) != CYC_OK;
       bad += cyc_surface_eval_grid_inverted(ctx, prcs, &inv, gu, 2, gv, 100, gp, {}, {}, gn,
                                             nullptr) != CYC_OK;
     }
