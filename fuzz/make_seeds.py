@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/ and
-fuzz_lines/.
+"""Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/,
+fuzz_lines/ and fuzz_blend/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -1359,6 +1359,269 @@ def lines_seeds():
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_blend
+
+class BlendEncoder(Encoder):
+    """Mirrors fuzz_blend.cpp. Surfaces: ("none",), ("cone",) (cone1 /
+    cone2 of tests/blend_test.cpp by index), ("prrs", lines), ("prcs",
+    lines), ("cubic", curves) with each value a small integer (coordinate
+    mode 3) or a sixteenth (mode 2), and an optional domain (u0_quarters,
+    len_quarters). Ops are appended with derivatives/blend/continuity and
+    encoded by finish()."""
+
+    def __init__(self, surfaces, handler=True):
+        super().__init__()
+        self.flag(handler)
+        for s in surfaces:
+            self.surface(*s)
+        self.ops = []
+
+    def coord(self, v):
+        if v == int(v) and -4 <= v <= 4:
+            self.range(0, 3, 3)
+            self.range(-4, 4, int(v))
+        else:
+            assert v * 16 == int(v * 16) and abs(v) <= 4, v
+            self.range(0, 3, 2)
+            self.range(-64, 64, int(v * 16))
+
+    def surface(self, kind, curves=None, domain=None, coincident=False):
+        modes = {"none": 0, "cone": 1, "prrs": 2, "prcs": 3, "cubic": 4}
+        self.range(0, 4, modes[kind])
+        if modes[kind] < 2:
+            return
+        for c in curves:
+            for x in c:
+                self.coord(x)
+        self.rarely(coincident)
+        self.flag(domain is not None)
+        if domain is not None:
+            self.range(-8, 8, domain[0])
+            self.range(1, 16, domain[1])
+
+    def pick(self, k):  # 0: A, 1: B, 2: NULL
+        self.range(0, 3, k)
+
+    def u(self, spec):
+        """("lo",), ("hi",), ("in", sixteenths), ("below"|"above", sixteenths),
+        ("wild", value)."""
+        k = spec[0]
+        if k == "lo":
+            self.range(0, 4, 0)
+        elif k == "hi":
+            self.range(0, 4, 1)
+        elif k == "in":
+            self.range(0, 4, 2)
+            self.range(0, 16, spec[1])
+        elif k in ("below", "above"):
+            self.range(0, 4, 3)
+            self.flag(k == "below")
+            self.range(1, 64, spec[1])
+        else:
+            self.range(0, 4, 4)
+            self.wild(spec[1])
+
+    def v(self, v):
+        if isinstance(v, tuple):  # ("tan", hundredths)
+            self.range(0, 4, 1)
+            self.range(-150, 150, v[1])
+        elif v in (INF, -INF):
+            self.range(0, 4, 0)
+            self.flag(v > 0)
+        elif not math.isnan(v) and v == int(v) and -4 <= v <= 4:
+            self.range(0, 4, 3)
+            self.range(-4, 4, int(v))
+        elif not math.isnan(v) and abs(v) <= 10 and v * 256 == int(v * 256):
+            self.range(0, 4, 2)
+            self.moderate(v)
+        else:
+            self.range(0, 4, 4)
+            self.wild(v)
+
+    def lam(self, v):
+        if v == 0:
+            self.range(0, 3, 0)
+        elif v in (1, -1):
+            self.range(0, 3, 1)
+            self.flag(v > 0)
+        elif not math.isnan(v) and abs(v) <= 4 and v * 16 == int(v * 16):
+            self.range(0, 3, 2)
+            self.range(-64, 64, int(v * 16))
+        else:
+            self.range(0, 3, 3)
+            self.wild(v)
+
+    BAD_K = [-1, -2, 8, 100, -2**31, 2**31 - 1]
+
+    def K(self, k):
+        bad = not (0 <= k <= 7)
+        self.rarely(bad)
+        if bad:
+            self.range(0, 5, self.BAD_K.index(k))
+        else:
+            self.range(0, 7, k)
+
+    def derivatives(self, pick, u, v, K, null_out=False):
+        self.ops.append(0)
+        self.range(0, 3, 0)
+        self.pick(pick)
+        self.u(u)
+        self.v(v)
+        self.K(K)
+        self.rarely(null_out)
+
+    def end(self, pick, u, vs, lam):
+        self.pick(pick)
+        self.u(u)
+        for v in vs:
+            self.v(v)
+        self.lam(lam)
+
+    def blend(self, canal, start, end, K, t=None, nulls=0):
+        """start/end: (pick, u, (v0, v1, v2), lambda); end None: identical.
+        t: None (0, 1), ("moderate", t0, t1), ("equal", t), ("wild", t0, t1)."""
+        self.ops.append(2 if canal else 1)
+        self.range(0, 3, 2 if canal else 1)
+        self.end(*start)
+        self.rarely(end is None)
+        if end is not None:
+            self.end(*end)
+        self.K(K)
+        if t is None:
+            self.range(0, 3, 0)
+        elif t[0] == "moderate":
+            self.range(0, 3, 1)
+            self.moderate(t[1])
+            self.moderate(t[2])
+        elif t[0] == "equal":
+            self.range(0, 3, 2)
+            self.moderate(t[1])
+        else:
+            self.range(0, 3, 3)
+            self.wild(t[1])
+            self.wild(t[2])
+        self.rarely(nulls != 0)
+        if nulls:
+            self.range(1, 3, nulls)
+
+    def continuity(self, a, b, ua, ub, lam, K, n, va=None, null_out=False):
+        """n: ("few", n in 1..8), ("bad", n in -2..0), ("many", 1..64),
+        ("min",) INT32_MIN; va None: NULL."""
+        self.ops.append(3)
+        self.range(0, 3, 3)
+        self.pick(a)
+        self.pick(b)
+        self.u(ua)
+        self.u(ub)
+        self.lam(lam)
+        self.K(K)
+        kinds = {"few": 0, "bad": 1, "many": 2, "min": 3}
+        self.range(0, 3, kinds[n[0]])
+        count = 0
+        if n[0] == "few":
+            self.range(1, 8, n[1]); count = n[1]
+        elif n[0] == "bad":
+            self.range(-2, 0, n[1])
+        elif n[0] == "many":
+            self.range(1, 64, n[1]); count = n[1]
+        else:
+            self.flag(True)
+        self.flag(va is None)
+        if va is not None:
+            assert len(va) == min(count, 8)
+            for v in va:
+                self.v(v)
+        self.rarely(null_out)
+
+    def finish(self):
+        # nops is read before the ops: splice it in after the surfaces.
+        return self.data_with_ops()
+
+    def data_with_ops(self):
+        body = self.consumed[self.ops_at:]
+        head = self.consumed[:self.ops_at]
+        self.consumed = head
+        assert 1 <= len(self.ops) <= 12
+        self.range(1, 12, len(self.ops))
+        self.consumed.extend(body)
+        return self.data()
+
+    def start_ops(self):
+        self.ops_at = len(self.consumed)
+
+
+def blend_seeds():
+    seeds = {}
+    G = INF
+    # Fig. 6-like cones: ringed K = 1, 2, 3 and canal K = 2, 3 between the
+    # upper end circles (lambda chosen by the domain), joins reported.
+    e = BlendEncoder([("cone",), ("cone",)])
+    e.start_ops()
+    vs = (G, -0.5, 0.75)
+    for K in (1, 2, 3):
+        e.blend(False, (0, ("hi",), vs, 0), (1, ("hi",), vs, 0), K)
+    for K in (2, 3):
+        e.blend(True, (0, ("hi",), (G, 0.25, 0), 0), (1, ("hi",), (G, 0.25, 0), 0), K)
+    e.continuity(0, 1, ("hi",), ("hi",), -1, 2, ("few", 3), va=[G, 0, ("tan", 40)])
+    e.derivatives(0, ("in", 8), ("tan", -70), 7)
+    e.continuity(0, 0, ("in", 5), ("in", 5), 1, 3, ("many", 32))
+    seeds["seed-fig6-cones"] = e.finish()
+    # PRRS of three lines / PRCS of two lines (moved apart), explicit lambda.
+    l1 = [(0, 0, 0, 1, 0, 0), (0, 1, 0, 0, 1, 1), (0, 0, 1, 1, 1, 0)]
+    l2 = [(0, 0, 0, 1, 0.5, 0), (0, 1, 1, 0, 1, -1)]
+    e = BlendEncoder([("prrs", l1, (0, 4)), ("prcs", l2, (-2, 6))])
+    e.start_ops()
+    e.blend(False, (0, ("hi",), (G, 1, -1), 1.5), (1, ("lo",), (G, 0.5, -2), 0.75), 2,
+            ("moderate", -1, 2))
+    e.blend(True, (1, ("in", 4), (1, -1, 0), -1), (0, ("lo",), (G, 2, 0), 1), 3)
+    e.blend(False, (0, ("above", 8), (0, 1, 2), 0), (1, ("below", 3), (-1, 0, 1), 0), 1)
+    e.derivatives(1, ("in", 3), G, 4)
+    e.continuity(1, 0, ("lo",), ("hi",), 0.5, 1, ("few", 2), va=[1, -G])
+    seeds["seed-lines"] = e.finish()
+    # PRCS of two cubics, canal and ringed blends into a PRRS.
+    c1 = [(0, 0, 0), (1, 0.25, 0), (0, 0.5, 0.125), (0.0625, 0, 0)]
+    c2 = [(0, 1, 0.5), (1, -0.125, 0.25), (0.25, 0, 0), (0, 0.125, 0)]
+    cubic = [tuple(x for row in c for x in row) for c in (c1, c2)]
+    e = BlendEncoder([("cubic", cubic), ("prrs", l1)])
+    e.start_ops()
+    e.blend(True, (0, ("hi",), (G, 0.5, 0), 0), (1, ("lo",), (G, -0.5, 0), 0), 2)
+    e.blend(False, (0, ("hi",), (G, 0.5, -1), 0), (1, ("lo",), (G, -0.5, 1), 0), 3)
+    e.derivatives(0, ("in", 16), 0.5, 3)
+    seeds["seed-cubics"] = e.finish()
+    # Hostile: NULL surfaces / ends / out, u outside / wild, v NaN, lambda
+    # NaN / huge, K out of range, t0 >= t1, identical ends, coincident lines,
+    # n <= 0, NULL va and outputs.
+    e = BlendEncoder([("prcs", [l2[0], l2[0]], None, True), ("cone",)], handler=False)
+    e.start_ops()
+    cone_end = (1, ("hi",), (G, -0.5, 0.75), 0)
+    e.blend(False, (2, ("hi",), (G, 0, 1), 0), cone_end, 1)
+    e.blend(False, cone_end, cone_end, 1, nulls=3)
+    e.blend(False, cone_end, None, 2)
+    e.blend(False, (1, ("lo",), (NAN, 0, 1), 0), cone_end, 1)
+    e.blend(True, (1, ("lo",), (G, 0, 1), NAN), cone_end, 2)
+    e.blend(True, (1, ("lo",), (G, 0, 1), 1e300), cone_end, 2)
+    e.blend(True, (1, ("lo",), (G, 0, 1), 1e60), cone_end, 3)
+    e.blend(False, (1, ("wild", 1e101), (G, 0, 1), 0), cone_end, 1)
+    e.blend(True, (1, ("lo",), (G, 0, 1), 0), cone_end, 1)
+    seeds["seed-hostile-blends"] = e.finish()
+    e = BlendEncoder([("cone",), ("prrs", [l1[0], l1[0], l1[1]])])
+    e.start_ops()
+    cone_end = (0, ("hi",), (G, -0.5, 0.75), 0)
+    e.blend(False, (0, ("lo",), (G, 0, 1), 0), cone_end, 8)
+    e.blend(False, (0, ("lo",), (G, 0, 1), 0), cone_end, 2, ("equal", 0.5))
+    e.blend(False, (0, ("lo",), (G, 0, 1), 0), cone_end, 2, ("wild", 1, -1))
+    e.blend(False, (0, ("below", 16), (G, 0, 1), 0), (1, ("hi",), (G, 0, 1), 0), 2)
+    e.derivatives(0, ("wild", NAN), 0, 2)
+    e.derivatives(0, ("lo",), -G, -1)
+    e.derivatives(0, ("wild", 1e30), 1, 7)
+    e.continuity(0, 0, ("lo",), ("hi",), 1e200, 2, ("bad", 0))
+    e.continuity(0, 0, ("wild", 1e300), ("hi",), 1, 7, ("few", 1), va=[NAN])
+    e.continuity(0, 1, ("lo",), ("hi",), 1e90, 3, ("few", 2))
+    e.continuity(2, 0, ("lo",), ("hi",), 1, 3, ("few", 2), null_out=True)
+    seeds["seed-hostile-args"] = e.finish()
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -1402,4 +1665,5 @@ if __name__ == "__main__":
     write("fuzz_eval", eval_seeds())
     write("fuzz_darboux", darboux_seeds())
     write("fuzz_lines", lines_seeds())
+    write("fuzz_blend", blend_seeds())
     write_dictionary()
