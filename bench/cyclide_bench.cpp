@@ -24,6 +24,7 @@
 #include "cyclide/cyclide.h"
 #include "cyclide/darboux.hpp"  // the core, for BM_DcmcCore and the core value
 #include "cyclide/darboux_lines.hpp"  // the core, for BM_ParabolicLinesCore
+#include "cyclide/blend.hpp"  // the core, for BM_BlendRinged / BM_BlendCanal
 
 std::uint64_t cyc_bench_alloc_count();  // alloc_hook.cpp
 bool cyc_bench_alloc_hooked();          // false: allocations are not counted
@@ -692,5 +693,172 @@ BENCHMARK(BM_PencilCircle);
 BENCHMARK(BM_PrrsLinesCyclide);
 BENCHMARK_CAPTURE(BM_ParabolicParameterize, prcs_ex2_eq39, CYC_SURFACE_PRCS);
 BENCHMARK_CAPTURE(BM_ParabolicParameterize, prrs_ex5_eq61, CYC_SURFACE_PRRS);
+
+// ------------------------------------------------------------ blends (SPEC §8d)
+
+// The Fig. 6-like cones of tests/blend_test.cpp: PRRS of three lines through
+// the apex, cone 1 (apex 0, axis z) and cone 2 (apex (4, 0, 4), axis -x),
+// both on [1/2, 1]; the blends join their u = 1 circles.
+void cone_lines(int which, double (*P)[3], double (*D)[3]) {
+  for (int k = 0; k < 3; ++k) {
+    const double t = 2 * M_PI * k / 3 + 0.3, c = std::cos(t), s = std::sin(t);
+    const double A0[3] = {0, 0, 0}, A1[3] = {4, 0, 4};
+    const double d0[3] = {c, s, 1}, d1[3] = {-1, c, s};
+    for (int j = 0; j < 3; ++j) {
+      P[k][j] = which ? A1[j] : A0[j];
+      D[k][j] = which ? d1[j] : d0[j];
+    }
+  }
+}
+
+cyclide::Surface core_cone(int which) {
+  using namespace cyclide;
+  double P[3][3], D[3][3];
+  cone_lines(which, P, D);
+  RationalCurve L[3];
+  for (int k = 0; k < 3; ++k)
+    make_line(Vec3d(P[k][0], P[k][1], P[k][2]), Vec3d(D[k][0], D[k][1], D[k][2]), L[k]);
+  Surface S;
+  make_prrs(L[0], L[1], L[2], nullptr, 0.5, 1.0, S);
+  return S;
+}
+
+cyc_surface* capi_cone(cyc_context* ctx, int which) {
+  double P[3][3], D[3][3];
+  cone_lines(which, P, D);
+  cyc_curve* L[3] = {nullptr, nullptr, nullptr};
+  for (int k = 0; k < 3; ++k) cyc_curve_create_line(ctx, P[k], D[k], &L[k]);
+  cyc_surface* S = nullptr;
+  cyc_prrs_create(ctx, L[0], L[1], L[2], nullptr, 0.5, 1.0, &S);
+  for (cyc_curve* c : L) cyc_curve_destroy(ctx, c);
+  return S;
+}
+
+constexpr double kBlendV[3] = {HUGE_VAL, -0.5, 0.7};
+
+// Core blend construction (Hermite curves from exact u-derivatives, then
+// make_prrs / make_prcs with their domain checks): allocation-free.
+void BM_BlendCore(benchmark::State& state, bool canal) {
+  using namespace cyclide;
+  const int K = int(state.range(0));
+  const Surface A = core_cone(0), B = core_cone(1);
+  BlendEnd s, e;
+  s.surface = &A;
+  e.surface = &B;
+  s.u = e.u = 1.0;
+  for (int j = 0; j < 3; ++j) s.v[j] = e.v[j] = kBlendV[j];
+  if (canal) s.v[1] = e.v[1] = 0.3;
+  Status bad = Status::ok;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s);
+    Surface X;
+    const Status st = canal ? make_canal_blend(s, e, K, 0.0, 1.0, X)
+                            : make_ringed_blend(s, e, K, 0.0, 1.0, X);
+    if (st != Status::ok) bad = st;
+    benchmark::DoNotOptimize(X);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  if (bad != Status::ok) {
+    state.SkipWithError("blend (core) failed on the cones");
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+void BM_BlendRinged(benchmark::State& state) { BM_BlendCore(state, false); }
+void BM_BlendCanal(benchmark::State& state) { BM_BlendCore(state, true); }
+
+// cyc_blend_ringed + cyc_surface_destroy (creation tier: the handle).
+void BM_BlendRingedCapi(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const int K = int(state.range(0));
+  cyc_surface* A = capi_cone(f.ctx, 0);
+  cyc_surface* B = capi_cone(f.ctx, 1);
+  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
+  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
+  int bad = (A && B) ? CYC_OK : CYC_E_INVALID_ARGUMENT;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    cyc_surface* X = nullptr;
+    const int st = cyc_blend_ringed(f.ctx, &s, &e, K, 0.0, 1.0, &X);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(X);
+    cyc_surface_destroy(f.ctx, X);
+  }
+  allocs.finish();
+  cyc_surface_destroy(f.ctx, A);
+  cyc_surface_destroy(f.ctx, B);
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_blend_ringed", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// cyc_surface_derivatives_u on cone 1 at 64 (u, v) pairs.
+void BM_DerivativesU(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const int K = int(state.range(0));
+  cyc_surface* A = capi_cone(f.ctx, 0);
+  double out[3 * (CYC_MAX_BLEND_ORDER + 1)];
+  int bad = A ? CYC_OK : CYC_E_INVALID_ARGUMENT;
+  std::size_t i = 0;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    const double u = 0.5 + (i % 8) / 16.0, v = std::tan(M_PI * ((i / 8) % 8 + 0.5) / 8 - M_PI / 2);
+    ++i;
+    const int st = cyc_surface_derivatives_u(f.ctx, A, u, v, K, out);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  cyc_surface_destroy(f.ctx, A);
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_surface_derivatives_u", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// cyc_continuity_report of the join of cone 1 (u = 1) and its C^2 ringed
+// blend (t = 0): K = 2, 16 samples spread over the circle.
+void BM_ContinuityReport(benchmark::State& state) {
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  cyc_surface* A = capi_cone(f.ctx, 0);
+  cyc_surface* B = capi_cone(f.ctx, 1);
+  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
+  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
+  cyc_surface* X = nullptr;
+  int bad = cyc_blend_ringed(f.ctx, &s, &e, 2, 0.0, 1.0, &X);
+  cyc_continuity R;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    if (bad != CYC_OK) break;
+    const int st = cyc_continuity_report(f.ctx, A, 1.0, 1.0, X, 0.0, 2, nullptr, 16, &R);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(R);
+    benchmark::ClobberMemory();
+  }
+  allocs.finish();
+  cyc_surface_destroy(f.ctx, X);
+  cyc_surface_destroy(f.ctx, A);
+  cyc_surface_destroy(f.ctx, B);
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_continuity_report", bad, f.ctx).c_str());
+    return;
+  }
+  state.SetItemsProcessed(state.iterations() * 16);
+}
+
+BENCHMARK(BM_BlendRinged)->Arg(1)->Arg(2)->Arg(3);
+BENCHMARK(BM_BlendCanal)->Arg(2)->Arg(3);
+BENCHMARK(BM_BlendRingedCapi)->Arg(2);
+BENCHMARK(BM_DerivativesU)->Arg(1)->Arg(2)->Arg(3);
+BENCHMARK(BM_ContinuityReport);
 
 }  // namespace
