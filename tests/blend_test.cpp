@@ -234,3 +234,24 @@ TEST(Blend, Validation) {
   EXPECT_EQ(continuity_report(A, 1, 1, B, 1, 1, nullptr, 0, R), Status::invalid_argument);
   EXPECT_EQ(continuity_report(A, 1, 1, B, 1, 8, nullptr, 4, R), Status::degree_too_high);
 }
+
+// fuzz_blend regress-continuity-huge-lambda: lambda = 1e90 with K = 2 made
+// |lambda^2 x_uu| ~ 1e180, whose norm overflowed: continuity_report returned
+// ok with point_jump / point_scale_l = inf. Non-finite measures are now
+// numerical_overflow (and `out` is untouched).
+TEST(Blend, RegressionContinuityReportHugeLambdaOverflows) {
+  const Surface A = cone1();
+  const double va[2] = {0.0, 1.0};
+  ContinuityReport R;
+  R.max_gap = 42;
+  EXPECT_EQ(continuity_report(A, 1.0, 1e90, A, 1.0, 2, va, 2, R), Status::numerical_overflow);
+  EXPECT_EQ(continuity_report(A, 1.0, -1e80, A, 1.0, 2, va, 2, R), Status::numerical_overflow);
+  EXPECT_EQ(R.max_gap, 42);
+  // A large but representable lambda still gives finite measures.
+  ASSERT_EQ(continuity_report(A, 1.0, 1e20, A, 1.0, 2, va, 2, R), Status::ok);
+  for (int l = 0; l <= 2; ++l) {
+    EXPECT_TRUE(std::isfinite(R.point_jump[l])) << l;
+    EXPECT_TRUE(std::isfinite(R.point_scale_l[l])) << l;
+    EXPECT_TRUE(std::isfinite(R.circle_jump[l])) << l;
+  }
+}

@@ -247,6 +247,12 @@ Status continuity_report(const Surface& A, double uA, double lambda, const Surfa
     R.max_normal_angle =
         std::max(R.max_normal_angle, std::atan2(a.cross(b).norm(), std::abs(a.dot(b))));
   }
+  // |lambda^l x^(l)| beyond ~1e154 overflows the norms (fuzz_blend
+  // regress-continuity-huge-lambda): no infinite measure is reported as ok.
+  bool finite = std::isfinite(R.max_gap) && std::isfinite(R.point_scale);
+  for (int l = 0; l <= K; ++l)
+    finite = finite && std::isfinite(R.point_jump[l]) && std::isfinite(R.point_scale_l[l]);
+  if (!finite) return Status::numerical_overflow;
   out = R;
   return Status::ok;
 }
