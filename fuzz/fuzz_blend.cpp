@@ -300,6 +300,9 @@ void op_blend(Input& in, Ctx& c, bool canal) {
     return canal ? cyc_blend_canal(c.ctx, a, b, K, t0, t1, oo)
                  : cyc_blend_ringed(c.ctx, a, b, K, t0, t1, oo);
   };
+  for (const cyc_blend_end& E : ends)
+    FZ_LOG("  end: u %a v %a %a %a lambda %a", E.u, E.v[0], E.v[1], E.v[2], E.lambda);
+  FZ_LOG("  K %d t0 %a t1 %a", K, t0, t1);
   const int st = call(&out);
   c.check(fn, st);
   const int count = canal ? 2 : 3;
@@ -324,6 +327,9 @@ void op_blend(Input& in, Ctx& c, bool canal) {
     FZ_CHECK(st == CYC_E_BAD_DOMAIN, "%s: t0 >= t1 gives %s", fn, cyc_status_name(st));
   else if (nan_v)
     FZ_CHECK(st == CYC_E_NOT_FINITE, "%s: v NaN gives %s", fn, cyc_status_name(st));
+  // NOT_FINITE means a non-finite (or > 1e100) input, nothing else.
+  if (st == CYC_E_NOT_FINITE)
+    FZ_CHECK(nan_in || nan_v, "%s: NOT_FINITE for valid inputs", fn);
   if (st != CYC_OK) {
     FZ_CHECK(out == kSentinelOut, "%s: *out written on error", fn);
     return;

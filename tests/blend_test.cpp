@@ -255,3 +255,31 @@ TEST(Blend, RegressionContinuityReportHugeLambdaOverflows) {
     EXPECT_TRUE(std::isfinite(R.circle_jump[l])) << l;
   }
 }
+
+// fuzz_blend regress-blend-huge-lambda: lambda = 1e60 with K = 2 puts
+// lambda^2 x_uu ~ 1e120 beyond the Hermite solve's input range; the blend
+// reported not_finite ("an input is NaN, infinite or larger than 1e100")
+// although every input was valid. Now numerical_overflow.
+TEST(Blend, RegressionHugeLambdaIsOverflowNotNonFiniteInput) {
+  const Surface A = cone1(), B = cone2();
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  s.lambda = 1e60;
+  e.surface = &B;
+  e.u = 1.0;
+  const double vs[3] = {HUGE_VAL, -0.5, 0.7};
+  for (int j = 0; j < 3; ++j) s.v[j] = e.v[j] = vs[j];
+  Surface X;
+  X.u1 = 42;
+  EXPECT_EQ(make_ringed_blend(s, e, 2, 0.0, 1.0, X), Status::numerical_overflow);
+  EXPECT_EQ(make_canal_blend(s, e, 3, 0.0, 1.0, X), Status::numerical_overflow);
+  EXPECT_EQ(X.u1, 42);
+  s.lambda = 1e30;  // 1e60 at K = 2: still representable, fine
+  EXPECT_NE(make_ringed_blend(s, e, 2, 0.0, 1.0, X), Status::not_finite);
+  // regress-blend-huge-interval: t1 = 2^192 (a valid input): the power-form
+  // Hermite coefficients leave the range; numerical_overflow, not not_finite.
+  s.lambda = 0;
+  EXPECT_EQ(make_ringed_blend(s, e, 2, 1.0, std::ldexp(1.0, 192), X), Status::numerical_overflow);
+  EXPECT_EQ(X.u1, 42);
+}

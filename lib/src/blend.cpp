@@ -139,12 +139,16 @@ Status blend_curves(const BlendEnd& start, const BlendEnd& end, int K, double t0
       for (int l = 1; l <= K; ++l) {
         f *= lambda;
         d[e][j][l] *= f;
+        // lambda^l x^(l) beyond the input range of the Hermite solve (e.g.
+        // lambda = 1e60, K = 2): an overflow, not a non-finite input (fuzz_blend
+        // regress-blend-huge-lambda).
+        if (!input_ok(d[e][j][l])) return Status::numerical_overflow;
       }
     }
   }
   for (int j = 0; j < count; ++j)
     if (Status st = make_hermite_curve(K, t0, t1, d[0][j], d[1][j], curves[j]); st != Status::ok)
-      return st;
+      return st == Status::not_finite ? Status::numerical_overflow : st;
   return Status::ok;
 }
 
@@ -156,7 +160,11 @@ Status make_canal_blend(const BlendEnd& start, const BlendEnd& end, int K, doubl
   RationalCurve p[2];
   if (Status st = blend_curves(start, end, K, t0, t1, 2, p); st != Status::ok) return st;
   Surface S;
-  if (Status st = make_prcs(p[0], p[1], nullptr, t0, t1, S, bad_u); st != Status::ok) return st;
+  // Inputs are validated above: a non-finite value from here on is an
+  // overflow of the construction (e.g. t1 = 2^192: power-form Hermite
+  // coefficients beyond 1e100), not a non-finite input.
+  if (Status st = make_prcs(p[0], p[1], nullptr, t0, t1, S, bad_u); st != Status::ok)
+    return st == Status::not_finite ? Status::numerical_overflow : st;
   out = S;
   if (curves)
     for (int j = 0; j < 2; ++j) curves[j] = p[j];
@@ -170,7 +178,7 @@ Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, doub
   if (Status st = blend_curves(start, end, K, t0, t1, 3, p); st != Status::ok) return st;
   Surface S;
   if (Status st = make_prrs(p[0], p[1], p[2], nullptr, t0, t1, S, bad_u); st != Status::ok)
-    return st;
+    return st == Status::not_finite ? Status::numerical_overflow : st;
   out = S;
   if (curves)
     for (int j = 0; j < 3; ++j) curves[j] = p[j];
