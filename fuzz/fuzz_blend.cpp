@@ -10,7 +10,8 @@
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and the
 //    error handler agree with it (fz::check_call); documented statuses for the
-//    validation errors (NULL, K, t0 >= t1, NaN, n < 1);
+//    validation errors (NULL, K, t0 >= t1, NaN, n < 1); blends give
+//    CYC_E_NOT_FINITE only for a non-finite or > 1e100 input;
 //  - on error every output is untouched (sentinel prefill; the *out surface
 //    pointer keeps its value); on OK every output is finite;
 //  - every call made twice gives identical bits (blends: identical points of
@@ -19,7 +20,8 @@
 //    t0 and t1 (distance relative to the geometry and derivative scale);
 //    for well-scaled inputs (see `judged`), the continuity report of each
 //    join has gap <= 1e-7 of the point scale, unless the join is
-//    ill-conditioned (derivatives 1e6 times the geometry: not judged);
+//    ill-conditioned (derivatives 1e6 times the geometry: not judged) or a
+//    canal blend meets a non-canal input (its circle is another one);
 //  - continuity reports: K and samples echo the input, 0 <= singular <= n,
 //    the angle is in [0, pi/2], all measures are >= 0.
 //
