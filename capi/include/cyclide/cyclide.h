@@ -537,14 +537,16 @@ typedef struct cyc_blend_end {
  *  across the joins (Prop. 6). K in 2..CYC_MAX_BLEND_ORDER. Where the normal
  *  planes M, N become (nearly) parallel on [t0, t1], CYC_E_DEPENDENT_PLANES
  *  (the message names the blend parameter), and the other statuses of
- *  cyc_prcs_create. Creation: allocates *out (destroy with
- *  cyc_surface_destroy); *out is written only on success. */
+ *  cyc_prcs_create; CYC_E_NUMERICAL_OVERFLOW when valid inputs overflow
+ *  the construction (lambda^l d^l x or the Hermite coefficients beyond
+ *  1e100). Creation: allocates *out (destroy with cyc_surface_destroy);
+ *  *out is written only on success. */
 CYC_API int cyc_blend_canal(cyc_context* ctx, const cyc_blend_end* start,
                             const cyc_blend_end* end, int K, double t0, double t1,
                             cyc_surface** out);
 /** Ringed blend (§9.2): three C^K Hermite curves through v[0..2], then PRRS
  *  (f = v); class C^K (Prop. 7). K in 1..CYC_MAX_BLEND_ORDER. Statuses of
- *  cyc_prrs_create. */
+ *  cyc_prrs_create, and CYC_E_NUMERICAL_OVERFLOW as for cyc_blend_canal. */
 CYC_API int cyc_blend_ringed(cyc_context* ctx, const cyc_blend_end* start,
                              const cyc_blend_end* end, int K, double t0, double t1,
                              cyc_surface** out);
@@ -572,8 +574,9 @@ typedef struct cyc_continuity {
 } cyc_continuity;
 
 /** va: n >= 1 circle parameters of a (NULL: n parameters spread over the
- *  whole circle). K in 0..CYC_MAX_BLEND_ORDER. Allocation-free; *out is
- *  written only on success. */
+ *  whole circle). K in 0..CYC_MAX_BLEND_ORDER. CYC_E_NUMERICAL_OVERFLOW if
+ *  lambda^l d^l x overflows. Allocation-free; *out is written only on
+ *  success. */
 CYC_API int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua,
                                   double lambda, const cyc_surface* b, double ub, int K,
                                   const double* va, int n, cyc_continuity* out);
