@@ -163,6 +163,20 @@ TEST(Darboux, TypesIncludingReducibleCases) {
   EXPECT_EQ(darboux_type(Darboux{}), DarbouxType::zero);
 }
 
+// Fuzz finding (fuzz_lines regress-tiny-plane-sphere-type): the type must
+// not depend on the equation's scale; z (a X.X - b) with |k| ~ 1e-164 was
+// parabolic while 2^7 times it was (rightly) reducible.
+TEST(Darboux, RegressionTypeIsScaleInvariantDownToTinyCoefficients) {
+  Darboux D;
+  D.k[kLz] = 3.59237314748795e-164;
+  D.k[kBz] = -3.5994032319253045e-164;
+  for (int e : {-7, 0, 7, 300, 600}) {
+    Darboux S = D;
+    for (double& v : S.k) v = std::ldexp(v, e);
+    EXPECT_EQ(darboux_type(S), DarbouxType::reducible) << e;
+  }
+}
+
 TEST(Darboux, GradientIsTheDerivativeOfTheValue) {
   Darboux D = example4(0.7);
   D.k[kPhi0] = 0.3;

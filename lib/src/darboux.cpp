@@ -131,9 +131,16 @@ bool quartic_reducible(const Darboux& D) {
 
 }  // namespace
 
-DarbouxType darboux_type(const Darboux& D) {
+DarbouxType darboux_type(const Darboux& D0) {
+  if (!(D0.scale() > 0)) return DarbouxType::zero;
+  // The type does not depend on the equation's scale: divide by a power of
+  // two near max |k| first (exact), so that the products below neither
+  // underflow nor overflow (fuzz_lines: z (a X.X - b) at |k| ~ 1e-164 was
+  // parabolic, 2^7 times it reducible).
+  Darboux D = D0;
+  const int e = std::ilogb(D0.scale());
+  for (double& v : D.k) v = std::ldexp(v, -e);
   const double s = D.scale();
-  if (!(s > 0)) return DarbouxType::zero;
   const double q = std::max({std::abs(D.k[kQxx]), std::abs(D.k[kQyy]), std::abs(D.k[kQzz]),
                              std::abs(D.k[kQxy]), std::abs(D.k[kQxz]), std::abs(D.k[kQyz])});
   if (!negligible(std::abs(D.phi0()), s))
