@@ -210,12 +210,20 @@ struct Found {
   CyclideLine lines[kMaxCyclideLines];
 };
 
+// The point of the line X + s d (|d| = 1) nearest the origin. Projected
+// twice: once leaves P.d ~ eps |X|, which is not small against |P| for a
+// line through (nearly) the origin (fuzz_lines).
+Vec3d foot(const Vec3d& X, const Vec3d& d) {
+  const Vec3d P = X - X.dot(d) * d;
+  return P - P.dot(d) * d;
+}
+
 void add_line(const Sections& P, double t, const Vec2& p, const Vec2& dir, int mult, Found& F) {
   if (F.line_count >= kMaxCyclideLines) return;
   CyclideLine c;
   c.line.d = P.direction(dir);
   const Vec3d X = P.point(t, p);
-  c.line.P = X - X.dot(c.line.d) * c.line.d;
+  c.line.P = foot(X, c.line.d);
   c.t = P.L * t;
   c.multiplicity = mult;
   F.lines[F.line_count++] = c;
@@ -316,7 +324,7 @@ void polish_line(const Darboux& U, const Vec3d& n, double L, CyclideLine& c) {
     d = e;
   }
   c.line.d = d;
-  c.line.P = P - P.dot(d) * d;
+  c.line.P = foot(P, d);
   c.t = n.dot(c.line.P);
 }
 
