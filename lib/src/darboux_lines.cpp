@@ -417,11 +417,14 @@ Status pencil_circle(const Darboux& D, const Line& L, const Vec3d& m, CircleOrLi
   C.axis = mh;
   if (std::abs(le) <= 1e-12 * l.norm()) {  // the plane through l0: the other line
     // No finite residual: the section is the line and l0 counted twice.
-    if (!(std::hypot(bs, br) > 0)) return Status::empty_real_locus;
-    const double k = -c0 / (bs * bs + br * br);
+    // G = bs s + br r + c0: scaled by max(|bs|, |br|) first, so that tiny
+    // coefficients do not underflow their squares (fuzz_lines).
+    const double big = std::max(std::abs(bs), std::abs(br));
+    if (!(big > 0)) return Status::empty_real_locus;
+    const double u = bs / big, w = br / big, k = -(c0 / big) / (u * u + w * w);
     C.is_line = true;
-    C.point = P + k * bs * d + k * br * e;
-    C.axis = (-br * d + bs * e).normalized();
+    C.point = P + k * (u * d + w * e);
+    C.axis = (-w * d + u * e).normalized();
   } else {
     const double s0 = -bs / (2 * le), r0 = -br / (2 * le);
     const double rad2 = s0 * s0 + r0 * r0 - c0 / le;
