@@ -282,6 +282,20 @@ class Input {
   FuzzedDataProvider p_;
 };
 
+// A coordinate: moderate, wild, well-scaled (m * 10^e, |e| <= 3) or a small
+// integer (fuzz_darboux, fuzz_lines; fuzz/make_seeds.py mirrors it).
+inline double coord(Input& in) {
+  switch (in.range(0, 3)) {
+    case 0: return in.moderate();
+    case 1: return in.wild();
+    case 2: return double(in.range(-99, 99)) / 10.0 * std::pow(10.0, double(in.range(-3, 2)));
+    default: return double(in.range(-4, 4));
+  }
+}
+inline void coords(Input& in, double* v, int n) {
+  for (int i = 0; i < n; ++i) v[i] = coord(in);
+}
+
 // ------------------------------------------------------------ sentinels
 
 // A sentinel bit pattern (a signalling-NaN-like payload no computation

@@ -40,6 +40,8 @@
 namespace {
 
 using fz::Input;
+using fz::coord;
+using fz::coords;
 
 constexpr double kEps = 2.220446049250313e-16;
 
@@ -81,19 +83,6 @@ void cross3(const double* a, const double* b, double* r) {
 
 // ------------------------------------------------------------ inputs
 
-// A coordinate: moderate, wild, well-scaled (m * 10^e, |e| <= 3) or a small
-// integer.
-double coord(Input& in) {
-  switch (in.range(0, 3)) {
-    case 0: return in.moderate();
-    case 1: return in.wild();
-    case 2: return double(in.range(-99, 99)) / 10.0 * std::pow(10.0, double(in.range(-3, 2)));
-    default: return double(in.range(-4, 4));
-  }
-}
-void coords(Input& in, double* v, int n) {
-  for (int i = 0; i < n; ++i) v[i] = coord(in);
-}
 
 // A unit-ish direction: a signed coordinate axis, or three coordinates.
 void direction(Input& in, double* d) {

@@ -49,6 +49,8 @@
 namespace {
 
 using fz::Input;
+using fz::coord;
+using fz::coords;
 
 constexpr double kEps = 2.220446049250313e-16;
 // |F(X)| <= kOnTol |grad F(X)| (1 + |X|) (+ rounding): X within ~1e-8 of F.
@@ -101,17 +103,6 @@ void normalize3(double* v) {
 
 // ------------------------------------------------------------ inputs
 
-double coord(Input& in) {
-  switch (in.range(0, 3)) {
-    case 0: return in.moderate();
-    case 1: return in.wild();
-    case 2: return double(in.range(-99, 99)) / 10.0 * std::pow(10.0, double(in.range(-3, 2)));
-    default: return double(in.range(-4, 4));
-  }
-}
-void coords(Input& in, double* v, int n) {
-  for (int i = 0; i < n; ++i) v[i] = coord(in);
-}
 // A dyadic coordinate in [-2, 2] (k / 64).
 double dyadic(Input& in) { return double(in.range(-128, 128)) / 64.0; }
 

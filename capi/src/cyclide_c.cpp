@@ -547,6 +547,18 @@ Outcome read_inversion(const char* fn, const cyc_inversion& in, Inversion& out) 
   return from_core(fn, check_inversion(out));
 }
 
+Line read_line(const cyc_line& l) { return {vec(l.point), vec(l.direction)}; }
+struct Line3 {  // three lines by value (a C array cannot be returned)
+  Line line[3];
+};
+Line3 read_lines(const cyc_line lines[3]) {
+  return {{read_line(lines[0]), read_line(lines[1]), read_line(lines[2])}};
+}
+void put_line(cyc_line& out, const Line& L) {
+  put3(out.point, L.P);
+  put3(out.direction, L.d);
+}
+
 void put_circle_or_line(cyc_circle_or_line& out, const CircleOrLine& C) {
   out.is_line = C.is_line ? 1 : 0;
   put3(out.point, C.point);
@@ -736,10 +748,9 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
     REQUIRE(lines);
     REQUIRE(base);
     REQUIRE(quadric);
-    Line L[3];
-    for (int i = 0; i < 3; ++i) L[i] = {vec(lines[i].point), vec(lines[i].direction)};
+    const Line3 L = read_lines(lines);
     DcmcFamily F;
-    if (Status s = dcmc(L, F); s != Status::ok) return from_core(fn, s);
+    if (Status s = dcmc(L.line, F); s != Status::ok) return from_core(fn, s);
     if (normal) put3(normal, F.n);
     put_darboux(base, F.base);
     put_darboux(quadric, F.quadric);
@@ -876,14 +887,6 @@ int cyc_classify_line_two_points(cyc_context* ctx, const cyc_line* l1, const dou
 
 // ------------------------------------------------------------ lines of parabolic cyclides
 
-namespace {
-Line read_line(const cyc_line& l) { return {vec(l.point), vec(l.direction)}; }
-void put_line(cyc_line& out, const Line& L) {
-  put3(out.point, L.P);
-  put3(out.direction, L.d);
-}
-}  // namespace
-
 int cyc_parabolic_lines(cyc_context* ctx, const cyc_darboux* d, cyc_cyclide_lines* out) {
   const char* fn = "cyc_parabolic_lines";
   return run(ctx, fn, [&] {
@@ -967,9 +970,9 @@ int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
   return run(ctx, fn, [&] {
     REQUIRE(lines);
     REQUIRE(out);
-    const Line L[3] = {read_line(lines[0]), read_line(lines[1]), read_line(lines[2])};
+    const Line3 L = read_lines(lines);
     PrrsLinesAnalysis A;
-    if (Status s = prrs_lines_analysis(L, A); s != Status::ok) return from_core(fn, s);
+    if (Status s = prrs_lines_analysis(L.line, A); s != Status::ok) return from_core(fn, s);
     cyc_prrs_lines_analysis R;
     std::memset(&R, 0, sizeof R);
     R.coplanar_pair = A.coplanar_pair;
@@ -997,10 +1000,10 @@ int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darbou
   return run(ctx, fn, [&] {
     REQUIRE(lines);
     REQUIRE(out);
-    const Line L[3] = {read_line(lines[0]), read_line(lines[1]), read_line(lines[2])};
+    const Line3 L = read_lines(lines);
     Darboux D;
     double r = 0;
-    const Status s = prrs_lines_cyclide(L, D, &r);
+    const Status s = prrs_lines_cyclide(L.line, D, &r);
     if (s == Status::invalid_argument)
       return fail(int(s), "%s: l1, l2 must meet in one plane at one parameter and (55) hold", fn);
     if (s != Status::ok) return from_core(fn, s);

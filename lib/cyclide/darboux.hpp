@@ -51,6 +51,13 @@ struct Darboux {
   Vec3d gradient(const Vec3d& X) const;
   // The largest |coefficient| (for relative tolerances).
   double scale() const;
+  // Divide by scale() (the equation is only defined up to a factor): false,
+  // and nothing changed, unless scale() is finite and positive.
+  bool normalize();
+  // Divided exactly by the power of two nearest below scale(), so that
+  // 1 <= scale() < 2: products of coefficients neither underflow nor
+  // overflow, and no rounding changes the equation (scale() > 0 required).
+  Darboux exponent_normalized() const;
 };
 
 // Relative size below which a coefficient group counts as zero for the

@@ -57,6 +57,20 @@ double Darboux::scale() const {
   return m;
 }
 
+bool Darboux::normalize() {
+  const double s = scale();
+  if (!std::isfinite(s) || !(s > 0)) return false;
+  for (double& v : k) v /= s;
+  return true;
+}
+
+Darboux Darboux::exponent_normalized() const {
+  Darboux D = *this;
+  const int e = std::ilogb(scale());
+  for (double& v : D.k) v = std::ldexp(v, -e);
+  return D;
+}
+
 namespace {
 
 bool negligible(double size, double scale) { return size <= kDarbouxZeroTol * scale; }
@@ -133,13 +147,10 @@ bool quartic_reducible(const Darboux& D) {
 
 DarbouxType darboux_type(const Darboux& D0) {
   if (!(D0.scale() > 0)) return DarbouxType::zero;
-  // The type does not depend on the equation's scale: divide by a power of
-  // two near max |k| first (exact), so that the products below neither
-  // underflow nor overflow (fuzz_lines: z (a X.X - b) at |k| ~ 1e-164 was
-  // parabolic, 2^7 times it reducible).
-  Darboux D = D0;
-  const int e = std::ilogb(D0.scale());
-  for (double& v : D.k) v = std::ldexp(v, -e);
+  // The type does not depend on the equation's scale: classify it after an
+  // exact division by a power of two (fuzz_lines: z (a X.X - b) at
+  // |k| ~ 1e-164 was parabolic, 2^7 times it reducible).
+  const Darboux D = D0.exponent_normalized();
   const double s = D.scale();
   const double q = std::max({std::abs(D.k[kQxx]), std::abs(D.k[kQyy]), std::abs(D.k[kQzz]),
                              std::abs(D.k[kQxy]), std::abs(D.k[kQxz]), std::abs(D.k[kQyz])});
@@ -325,9 +336,7 @@ Status invert_darboux(const Inversion& inv, const Darboux& D, Darboux& out) {
   // fuzz_darboux found NaN returned with ok).
   for (double v : R.k)
     if (!std::isfinite(v)) return Status::numerical_overflow;
-  const double s = R.scale();
-  if (!(s > 0)) return Status::invalid_argument;
-  for (double& v : R.k) v /= s;
+  if (!R.normalize()) return Status::invalid_argument;
   out = R;
   return Status::ok;
 }

@@ -219,9 +219,7 @@ Status line_element_cyclide(const NormalForm& nf, Darboux& normal, Darboux& inpu
   N.k[kBy] = -c;
   N.k[kBz] = -1;
   Darboux G = pullback(N, nf.T);
-  const double s = G.scale();
-  if (!std::isfinite(s) || !(s > 0)) return Status::numerical_overflow;
-  for (double& k : G.k) k /= s;
+  if (!G.normalize()) return Status::numerical_overflow;
   normal = N;
   input = G;
   return Status::ok;

@@ -342,13 +342,11 @@ Status parabolic_lines(const Darboux& D, ParabolicLines& out) {
   for (double v : D.k)
     if (!input_ok(v)) return Status::not_finite;
   if (darboux_type(D) != DarbouxType::parabolic) return Status::not_parabolic;
-  // The lines do not depend on the equation's scale: divide by a power of
-  // two near max |k| (exact), so that |l| and the products below neither
+  // The lines do not depend on the equation's scale: work on it divided
+  // exactly by a power of two, so that |l| and the products below neither
   // underflow nor overflow (fuzz_lines: subnormal coefficients gave
   // |l| = 0 and a NaN normal with ok).
-  Darboux U = D;
-  const int e = std::ilogb(D.scale());
-  for (double& v : U.k) v = std::ldexp(v, -e);
+  const Darboux U = D.exponent_normalized();
   const Sections P = sections_of(U);
   // The planes where A(t) is singular: t = -(eigenvalues of S).
   double m0, m1;
@@ -698,8 +696,7 @@ Status prrs_lines_cyclide(const Line (&lines)[3], Darboux& out, double* residual
   if (!(qq > 1e-24 * std::max(bb, 1e-300))) return Status::rank_deficient;
   const double alpha = -bq / qq;
   Darboux C = F.member(alpha);
-  const double s = C.scale();
-  for (double& v : C.k) v /= s;
+  if (!C.normalize()) return Status::numerical_overflow;
   double res = 0;
   for (int i = 0; i < 4; ++i) {
     const Vec3d X = l2.P + (i - 1.5) * d;

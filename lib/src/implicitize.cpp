@@ -91,10 +91,8 @@ Darboux to_input_coordinates(const Coeffs& g, const Box& B) {
 }
 
 // Largest |coefficient| 1, first coefficient above 1e-6 positive.
-bool normalize(Darboux& D) {
-  const double s = D.scale();
-  if (!std::isfinite(s) || !(s > 0)) return false;
-  for (double& v : D.k) v /= s;
+bool normalize_with_sign(Darboux& D) {
+  if (!D.normalize()) return false;
   for (double v : D.k)
     if (std::abs(v) > 1e-6) {
       if (v < 0)
@@ -142,7 +140,7 @@ Status fit_darboux(const Vec3d* points, int count, DarbouxFit& out) {
                                : Coeffs(svd.matrixV().col(kDarbouxCoeffs - 1));
   DarbouxFit F;
   F.D = to_input_coordinates(g, B);
-  if (!normalize(F.D)) return Status::numerical_overflow;
+  if (!normalize_with_sign(F.D)) return Status::numerical_overflow;
   F.residual = fit_residual(from_coeffs(g), Y, count, B.diag);
   F.sigma_ratio = sv[kDarbouxCoeffs - 1] / sv[0];
   F.nullity = nullity;
