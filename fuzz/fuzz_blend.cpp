@@ -197,6 +197,26 @@ double circle_distance(Ctx& c, const cyc_surface* S, double u, const double* X, 
   return std::hypot(h, fz::norm3(q) - r);
 }
 
+// Length scale of the frame of S at u: |center| and radius of the circle
+// and, for canal surfaces, of the touching sphere (as fuzz_eval's
+// Geometry::L); 1 if unavailable. Two evaluations of the same point by
+// different arithmetic agree relative to this, not to |x| (a small point on
+// a huge circle is a cancellation).
+double frame_scale(Ctx& c, const cyc_surface* S, double u) {
+  double L = 1;
+  cyc_circle C;
+  const int st = cyc_surface_circle(c.ctx, S, u, &C);
+  c.check("cyc_surface_circle", st);
+  if (st == CYC_OK && C.radius2 >= 0)
+    L = std::max({L, fz::norm3(C.center), std::sqrt(C.radius2)});
+  cyc_sphere Sp;
+  const int ss = cyc_surface_sphere(c.ctx, S, u, &Sp);
+  c.check("cyc_surface_sphere", ss);
+  if (ss == CYC_OK && Sp.radius2 >= 0)
+    L = std::max({L, fz::norm3(Sp.center), std::sqrt(Sp.radius2)});
+  return std::isfinite(L) ? L : 1.0;
+}
+
 // The lambda the library uses for an end (cyclide::blend_lambda).
 double effective_lambda(const cyc_blend_end& e, int index, double u0, double u1) {
   if (e.lambda != 0.0) return e.lambda;
@@ -245,7 +265,7 @@ void op_derivatives(Input& in, Ctx& c) {
     const int se = cyc_surface_eval(c.ctx, S, u, v, X, nullptr, nullptr, nullptr);
     c.check("cyc_surface_eval", se);
     if (se == CYC_OK) {
-      const double scale = std::max({1.0, fz::norm3(X), fz::norm3(out)});
+      const double scale = std::max({frame_scale(c, S, u), fz::norm3(X), fz::norm3(out)});
       FZ_CHECK(fz::dist3(X, out) <= 1e-9 * scale, "derivatives_u: x %.17g from eval (scale %g)",
                fz::dist3(X, out), scale);
     }

@@ -532,6 +532,10 @@ void op_invert_circle(Input& in, Ctx& c) {
   const double dX = nm + nYp * (2 + (fz::norm3(P) + nm) / nY);
   const double amp = R.is_line ? 1.0 : std::max(1.0, R.radius / std::max(nYp, 1e-300));
   const double tol = 1e-9 * scale + 1e3 * kEps * dX * amp * amp;
+  FZ_LOG("    P = (%.17g %.17g %.17g) -> X' = (%.17g %.17g %.17g); image %s p = (%.17g %.17g %.17g) "
+         "axis = (%.17g %.17g %.17g) r = %.17g",
+         P[0], P[1], P[2], Xp[0], Xp[1], Xp[2], R.is_line ? "line" : "circle", R.point[0],
+         R.point[1], R.point[2], R.axis[0], R.axis[1], R.axis[2], R.radius);
   FZ_CHECK(dist <= tol, "image of a %s point is off the image %s: %.3g > %.3g",
            C.is_line ? "line" : "circle", R.is_line ? "line" : "circle", dist, tol);
 }
@@ -683,6 +687,7 @@ void op_invert_darboux(Input& in, Ctx& c) {
   if (fz::verbose()) {
     FZ_LOG("invert_darboux m = (%a %a %a) rho = %a -> %s", inv.center[0], inv.center[1],
            inv.center[2], inv.radius, cyc_status_name(st[0]));
+    if (on) FZ_LOG("    X0 = (%a %a %a), D(X0) = %a", X0[0], X0[1], X0[2], value(D.k, X0));
     for (int i = 0; i < 14; ++i)
       FZ_LOG("    k[%d] = %a -> %a", i, D.k[i], st[0] == CYC_OK ? r[0].k[i] : 0.0);
   }
@@ -702,6 +707,10 @@ void op_invert_darboux(Input& in, Ctx& c) {
   // Well-scaled: X0 on D maps onto the image.
   if (!on || !inversion_ws(inv) || !std::all_of(D.k, D.k + 13, ws) || !away_from_center(inv, X0))
     return;
+  // X0 is on D only if the shift of the constant term did not round away: a
+  // huge constant term absorbs D(X0) (k13 - D(X0) == 0, fuzz_darboux finding
+  // regress-invert-huge-constant-term).
+  if (!(std::abs(value(D.k, X0)) <= 16 * kEps * abs_value(D.k, X0))) return;
   double Xp[3];
   if (invert_point_checked(c, &inv, X0, Xp) != CYC_OK) return;
   double raw[14], maj[14];

@@ -131,4 +131,34 @@ RC_GTEST_PROP(DarbouxProperties, SpheresAndCirclesMapToSpheresAndCircles, ()) {
   }
 }
 
+// A line maps to a circle through m (closed form: center m - rho^2 h /
+// (2 |h|^2), h = m minus its foot on the line), or to itself through m.
+RC_GTEST_PROP(DarbouxProperties, LinesMapToCirclesThroughTheCenter, ()) {
+  const Inversion inv{*point(), 0.5 + std::abs(*coord())};
+  const Vec3d p = *point(), d0 = *point();
+  RC_PRE(d0.norm() > 0.25);
+  const Vec3d d = d0.normalized();
+  const Vec3d w = inv.m - p, h = w - w.dot(d) * d;
+  RC_PRE(h.norm() > 0.05);
+  CircleOrLine L{true, p, d, 0}, C;
+  RC_ASSERT(invert_circle(inv, L, C) == Status::ok);
+  RC_ASSERT(!C.is_line);
+  RC_ASSERT(std::abs((inv.m - C.point).norm() - C.radius) <= 1e-12 * (C.radius + inv.m.norm()));
+  for (double s : {-3.0, -0.5, 0.7, 2.0}) {
+    const Vec3d X = p + s * d;
+    RC_PRE((X - inv.m).norm() > 0.25);
+    Vec3d Y;
+    RC_ASSERT(invert_point(inv, X, Y) == Status::ok);
+    const Vec3d v = Y - C.point;
+    const double scale = 1 + Y.norm() + C.radius;
+    RC_ASSERT(std::abs(v.dot(C.axis)) <= 1e-9 * scale);
+    RC_ASSERT(std::abs(v.norm() - C.radius) <= 1e-9 * scale);
+  }
+  // The same line moved through m maps to itself.
+  const CircleOrLine T{true, inv.m + 0.37 * d, d, 0};
+  RC_ASSERT(invert_circle(inv, T, C) == Status::ok);
+  RC_ASSERT(C.is_line);
+  RC_ASSERT(std::abs(std::abs(C.axis.dot(d)) - 1) <= 1e-12);
+}
+
 }  // namespace

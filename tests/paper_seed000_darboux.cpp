@@ -254,6 +254,26 @@ TEST(Darboux, InvertCircleCollapsedImageIsNumericalOverflow) {
   EXPECT_NEAR(out.axis.norm(), 1.0, 1e-12);
 }
 
+// Regression (fuzz_darboux, fuzz/corpus/fuzz_darboux/regress-line-through-
+// far-center): a line through m = (-122.98828125, -6, 1) (rho = 1/32) misses
+// m by the rounding of its point (~1e-14), which was more than 1e-14 (|w| +
+// rho): the image was built from three far image points and came out as a
+// line of direction (0, 0, 1). Through m to the rounding of the coordinates
+// the line is its own image.
+TEST(Darboux, InvertLineThroughFarCenterIsTheLineItself) {
+  const Inversion inv{{-0x1.ebf4p+6, -0x1.8p+2, 0x1p+0}, 0x1p-5};
+  const CircleOrLine line{true,
+                          {-0x1.ebeb0634fbe6ep+6, -0x1.8p+2, 0x1.fdc18d1aeea5ap-1},
+                          {-0x1p+0, -0x0p+0, 0x1.0000101p-1},
+                          0};
+  CircleOrLine out;
+  ASSERT_EQ(invert_circle(inv, line, out), Status::ok);
+  ASSERT_TRUE(out.is_line);
+  EXPECT_NEAR(std::abs(out.axis.dot(line.axis.normalized())), 1.0, 1e-15);
+  const Vec3d w = inv.m - out.point;
+  EXPECT_LE((w - w.dot(out.axis) * out.axis).norm(), 1e-13);
+}
+
 // Regression (fuzz_darboux, fuzz/corpus/fuzz_darboux/regress-nan-image-*):
 // with huge centers or radii the closed forms overflow to inf - inf = NaN in
 // one coefficient; the normalization's max skipped the NaN and

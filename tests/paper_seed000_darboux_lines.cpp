@@ -319,5 +319,36 @@ TEST(DarbouxLines, RegressionSubnormalCoefficientsGiveTheSameLines) {
   }
 }
 
+// Regression (fuzz_lines, fuzz/corpus/fuzz_lines/regress-two-close-line-pair-
+// planes): F = z |X|^2 - y^2 - 3.25 z^2 + xy/2 - 127.5078125 xz + yz/2 + 3z/4
+// has degenerate planes z = 0 and z = 1.1556959730e-5 (det M(t) = t (65536 t^4
+// - 278528 t^3 - 266121089 t^2 + 265816929 t - 3072) / 65536, exact). Scaled
+// by L ~ 64 they are 1.8e-7 apart, where det M at their midpoint is
+// rounding-sized: the cluster was taken for a double root at the midpoint,
+// whose conic is a line pair, and its lines were off F by a relative 5e-8.
+// Now both planes are found and every line is on F.
+TEST(DarbouxLines, RegressionTwoCloseLinePairPlanesAreBothFound) {
+  Darboux D;
+  const double k[14] = {0, 0, 0, 1, 0, -1, -3.25, 0.5, -127.5078125, 0.5, 0, 0, 0.75, 0};
+  std::copy(k, k + 14, D.k);
+  ParabolicLines A;
+  ASSERT_EQ(parabolic_lines(D, A), Status::ok);
+  bool at0 = false, at1 = false;
+  for (int i = 0; i < A.plane_count; ++i) {
+    at0 = at0 || std::abs(A.planes[i].t) <= 1e-12;
+    at1 = at1 || std::abs(A.planes[i].t - 1.1556959730040821604e-5) <= 1e-12;
+  }
+  EXPECT_TRUE(at0);
+  EXPECT_TRUE(at1);
+  for (int i = 0; i < A.line_count; ++i) {
+    const Line& L = A.lines[i].line;
+    for (double s : {-10.0, 0.0, 10.0}) {
+      const Vec3d X = L.P + s * L.d;
+      // |F| against the size of its terms along the line (|X| <= ~70).
+      EXPECT_LE(std::abs(D.value(X)), 1e-12 * 128 * std::pow(1 + X.norm(), 3)) << i << " " << s;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cyclide

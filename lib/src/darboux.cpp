@@ -278,18 +278,33 @@ Status invert_circle(const Inversion& inv, const CircleOrLine& c, CircleOrLine& 
   const Vec3d ax = c.axis.normalized();
   const Vec3d e1 = ax.unitOrthogonal(), e2 = ax.cross(e1);
   CircleOrLine r;
+  // Where m lies on the input to the rounding of the coordinates (not only
+  // relative to its distance from c.point: fuzz_darboux found a line through
+  // m at |m| ~ 123, off by rounding, mapped to a line of a wrong direction).
+  const double resolution = 16 * std::numeric_limits<double>::epsilon() *
+                            (inv.m.norm() + c.point.norm());
   if (c.is_line) {
-    // Through m: the line maps to itself. Otherwise a circle through m.
+    // Through m: the line maps to itself. Otherwise the circle through m
+    // whose diameter is the image of the foot F = m - h of m on the line:
+    // center m - rho^2 h / (2 |h|^2), radius rho^2 / (2 |h|), in the plane
+    // of the line and m (closed form: three far image points are not
+    // resolved when the line passes close to m).
     const Vec3d w = inv.m - c.point;
-    const double off = (w - w.dot(ax) * ax).norm();
-    if (off <= 1e-14 * (w.norm() + inv.rho)) {
+    const Vec3d h = w - w.dot(ax) * ax;  // m minus its foot on the line
+    const double off = h.norm();
+    if (off <= std::max(1e-14 * (w.norm() + inv.rho), resolution)) {
       r = c;
       r.axis = ax;
     } else {
-      const Vec3d foot = c.point + w.dot(ax) * ax;  // nearest to m
-      const Vec3d p = invert_raw(inv, foot + off * ax), q = invert_raw(inv, foot - off * ax);
-      if (!distinct(inv.m, p, q)) return Status::numerical_overflow;
-      r = through(inv.m, p, q);
+      const double k = inv.rho * inv.rho;
+      r.is_line = false;
+      r.point = inv.m - (k / (2 * off * off)) * h;
+      r.radius = k / (2 * off);
+      r.axis = h.cross(ax).normalized();
+      // A circle below the rounding of its center (rho^2 underflowing) is
+      // not resolved.
+      if (!(r.radius > 64 * std::numeric_limits<double>::epsilon() * r.point.norm()))
+        return Status::numerical_overflow;
     }
   } else {
     if (!(c.radius > 0)) return Status::invalid_argument;
@@ -305,7 +320,7 @@ Status invert_circle(const Inversion& inv, const CircleOrLine& c, CircleOrLine& 
       P[i] = c.point + c.radius * (std::cos(t) * e1 + std::sin(t) * e2);
     }
     const Vec3d Q0 = invert_raw(inv, P[0]), Q1 = invert_raw(inv, P[1]);
-    if (on <= 1e-14 * (c.radius + w.norm())) {
+    if (on <= std::max(1e-14 * (c.radius + w.norm()), resolution)) {
       if (!apart(Q0, Q1)) return Status::numerical_overflow;
       r.is_line = true;
       r.point = Q0;

@@ -105,6 +105,26 @@ Sections sections_of(const Darboux& D) {
   return P;
 }
 
+// The conic of the plane t, M = [[A, beta], [beta^T, gamma]] in (eta, 1).
+Eigen::Matrix3d section_conic(const Sections& P, double t) {
+  Eigen::Matrix3d M;
+  M.topLeftCorner<2, 2>() = P.A(t);
+  M.block<2, 1>(0, 2) = P.beta(t);
+  M.block<1, 2>(2, 0) = P.beta(t).transpose();
+  M(2, 2) = P.gamma(t);
+  return M;
+}
+
+// Is the conic of the plane t of rank <= 1 (a double line, or zero)?
+bool double_line_at(const Sections& P, double t) {
+  const Eigen::Vector3d mu =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(section_conic(P, t), Eigen::EigenvaluesOnly)
+          .eigenvalues()
+          .cwiseAbs();
+  double big = mu.maxCoeff(), mid = mu.sum() - big - mu.minCoeff();
+  return mid <= kLineAnalysisTol * big;
+}
+
 // r(t) = gamma det A - beta^T adj(A) beta: the conic's determinant.
 P5 section_determinant(const Sections& P) {
   const P5 a00 = poly(P.S(0, 0), 1), a11 = poly(P.S(1, 1), 1), a01 = poly(P.S(0, 1));
@@ -145,14 +165,33 @@ bool is_root(const P5& r, double t, bool tight = false) {
                : std::abs(r(t)) <= 1e-11 * size + 1e-14;
 }
 
+// Do the members re[i..j) of a cluster polish (Newton on r) into distinct
+// simple roots? Two planes 1e-7 apart (scaled) are at the limit where r at
+// their midpoint is rounding-sized, so the center test alone would merge
+// them (fuzz_lines regress-two-close-line-pair-planes); a true multiple root
+// sends Newton from every member to the same point (or not at all).
+bool resolves_into_simple_roots(const P5& r, const double* re, int i, int j) {
+  double prev = 0;
+  for (int k = i; k < j; ++k) {
+    double t = re[k];
+    if (!polish(r, t) || !is_root(r, t, true)) return false;
+    if (k > i && !(std::abs(t - prev) > 1e-9 * (1 + std::abs(t)))) return false;
+    prev = t;
+  }
+  return true;
+}
+
 // Real roots of the monic quintic r. A double line is a root of
 // multiplicity 2 or 3, which the eigenvalues split by up to ~eps^(1/3)
 // (also into complex pairs with |Im| <= 1e-5): a cluster is polished by
 // Newton on the derivative of its multiplicity and kept if that converges
-// and r vanishes there (tightly); otherwise its members are separate simple
-// roots, kept where Newton on r converges and r vanishes (a complex pair's
-// real part fails: fuzz_lines limit-close-degenerate-planes).
-int real_roots(const P5& r, double (&roots)[5]) {
+// and r vanishes there (tightly), unless the plane there is not a double
+// line (double_line(t) false) and the members resolve into distinct simple
+// roots; otherwise its members are separate simple roots, kept where Newton
+// on r converges and r vanishes (a complex pair's real part fails:
+// fuzz_lines limit-close-degenerate-planes).
+template <class DoubleLine>
+int real_roots(const P5& r, const DoubleLine& double_line, double (&roots)[5]) {
   Eigen::Matrix<double, 5, 5> C = Eigen::Matrix<double, 5, 5>::Zero();
   for (int i = 1; i < 5; ++i) C(i, i - 1) = 1;
   for (int i = 0; i < 5; ++i) C(i, 4) = -r.c[i];
@@ -179,7 +218,8 @@ int real_roots(const P5& r, double (&roots)[5]) {
       t /= (j - i);
       P5 p = r;
       for (int m = 1; m < j - i; ++m) p = p.derivative();
-      if (polish(p, t) && is_root(r, t, true)) {
+      if (polish(p, t) && is_root(r, t, true) &&
+          (double_line(t) || !resolves_into_simple_roots(r, re, i, j))) {
         keep(t);
         i = j;
         continue;
@@ -252,12 +292,7 @@ bool add_line_coords(const Sections& P, double t, const Eigen::Vector3d& w, int 
 // infinity. (Symmetric eigenvectors are well conditioned where the point
 // -A^{-1} beta is not.)
 void section_lines(const Sections& P, double t, Found& F) {
-  Eigen::Matrix3d M;
-  M.topLeftCorner<2, 2>() = P.A(t);
-  M.block<2, 1>(0, 2) = P.beta(t);
-  M.block<1, 2>(2, 0) = P.beta(t).transpose();
-  M(2, 2) = P.gamma(t);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(M);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(section_conic(P, t));
   int idx[3] = {0, 1, 2};
   const auto& mu = es.eigenvalues();
   std::sort(idx, idx + 3, [&](int i, int j) { return std::abs(mu[i]) > std::abs(mu[j]); });
@@ -354,7 +389,8 @@ Status parabolic_lines(const Darboux& D, ParabolicLines& out) {
   eigen2(P.S, m0, m1, w0, w1);
   const double special[2] = {-m1, -m0};
   double roots[5];
-  const int nr = real_roots(section_determinant(P), roots);
+  const int nr = real_roots(
+      section_determinant(P), [&](double t) { return double_line_at(P, t); }, roots);
   // Where A(t) is singular (t = -mu_k, in closed form) and the conic is
   // degenerate, r(t) = -lambda (beta.v)^2 = 0: that plane is a root, a
   // multiple one for a double line, which the eigenvalues split into
