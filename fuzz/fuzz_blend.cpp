@@ -281,6 +281,20 @@ void blend_end(Input& in, Ctx& c, cyc_blend_end& e, const Surf*& s, bool& ws) {
   if (s && !(e.u >= s->u0 - 4 && e.u <= s->u1 + 4)) ws = false;
   for (double& v : e.v) v = param_v(in, ws);
   e.lambda = param_lambda(in, ws);
+  // Higher reparameterization derivatives phi'', ...: mostly none, else
+  // moderate dyadic values, rarely a non-finite one.
+  for (double& p : e.phi) p = 0.0;
+  if (in.rarely())
+    for (double& p : e.phi) p = in.range(-16, 16) / 8.0;
+  if (in.rarely()) e.phi[in.range(0, CYC_MAX_BLEND_ORDER - 2)] = in.flag() ? NAN : 1e300;
+}
+
+// The largest |phi^(m)| of an end (lambda and phi[]): the scale of the
+// reparameterized derivatives is at most (2 max(1, this) (t1 - t0))^l |x^(l)|.
+double jet_bound(const cyc_blend_end& e, double lam) {
+  double m = std::max(1.0, std::abs(lam));
+  for (double p : e.phi) m = std::max(m, std::abs(p));
+  return 2 * m;
 }
 
 void op_blend(Input& in, Ctx& c, bool canal) {
@@ -323,7 +337,8 @@ void op_blend(Input& in, Ctx& c, bool canal) {
                  : cyc_blend_ringed(c.ctx, a, b, K, t0, t1, oo);
   };
   for (const cyc_blend_end& E : ends)
-    FZ_LOG("  end: u %a v %a %a %a lambda %a", E.u, E.v[0], E.v[1], E.v[2], E.lambda);
+    FZ_LOG("  end: u %a v %a %a %a lambda %a phi'' %a", E.u, E.v[0], E.v[1], E.v[2], E.lambda,
+           E.phi[0]);
   FZ_LOG("  K %d t0 %a t1 %a", K, t0, t1);
   const int st = call(&out);
   c.check(fn, st);
@@ -334,6 +349,8 @@ void op_blend(Input& in, Ctx& c, bool canal) {
   bool nan_in = bad(t0) || bad(t1), nan_v = false;
   for (const cyc_blend_end& e : ends) {
     if (bad(e.u) || bad(e.lambda)) nan_in = true;
+    for (int m = 2; m <= K && K <= CYC_MAX_BLEND_ORDER; ++m)
+      if (bad(e.phi[m - 2])) nan_in = true;
     for (int j = 0; j < count; ++j)
       if (std::isnan(e.v[j])) nan_v = true;
   }
@@ -401,7 +418,7 @@ void op_blend(Input& in, Ctx& c, bool canal) {
       double scale = 0, f = 1;
       for (int l = 0; l <= K; ++l) {
         scale = std::max(scale, fz::norm3(d + 3 * l) * f);
-        f *= std::abs(lam) * (t1 - t0);
+        f *= jet_bound(E, lam) * (t1 - t0);
       }
       const double dist = circle_distance(c, out, e ? t1 : t0, d, &scale);
       if (!std::isfinite(dist) || !std::isfinite(scale)) continue;  // circle unavailable

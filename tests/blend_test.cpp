@@ -138,6 +138,80 @@ TEST(RingedBlend, Figure6ConesC1AndHigherOrders) {
   }
 }
 
+// Faa di Bruno (reparameterize): x(u) = (u^3, u^2 - u, 1/(1 + u)) at
+// u0 = 0.5 with u = phi(t) = u0 + a t + b t^2/2 + c t^3/6, against the
+// series of x(phi(t)) formed directly (the same truncated arithmetic, a
+// different route: no composition).
+TEST(Reparameterize, FaaDiBrunoMatchesTheComposedSeries) {
+  const double u0 = 0.5, jet[3] = {1.7, -0.6, 2.3};
+  Taylor<double, 3> U;
+  U.c[0] = u0;
+  U.c[1] = jet[0];
+  U.c[2] = jet[1] / 2;
+  U.c[3] = jet[2] / 6;
+  const Taylor<double, 3> one(1.0);
+  const Taylor<double, 3> X[3] = {U * U * U, U * U - U, one / (one + U)};
+  // d^k x / du^k at u0.
+  const double w = 1 + u0;
+  const Vec3d dx[4] = {{u0 * u0 * u0, u0 * u0 - u0, 1 / w},
+                       {3 * u0 * u0, 2 * u0 - 1, -1 / (w * w)},
+                       {6 * u0, 2, 2 / (w * w * w)},
+                       {6, 0, -6 / (w * w * w * w)}};
+  Vec3d out[4];
+  reparameterize(3, dx, jet, out);
+  const double fact[4] = {1, 1, 2, 6};
+  for (int l = 0; l <= 3; ++l)
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(out[l][j], fact[l] * X[j].c[l], 1e-13) << l << j;
+  // phi'' = phi''' = 0: plain lambda^l scaling.
+  const double plain[3] = {-2.0, 0.0, 0.0};
+  reparameterize(3, dx, plain, out);
+  for (int l = 0; l <= 3; ++l) EXPECT_EQ(out[l], std::pow(-2.0, l) * dx[l]) << l;
+}
+
+// The higher Hermite scalars phi'', ... change the blend but keep the join
+// geometrically C^K: the continuity report with the same jet sees no jumps,
+// the plain lambda^l comparison sees one at order 2.
+TEST(RingedBlend, HigherReparameterizationDerivativesKeepGK) {
+  const Surface A = cone1(), B = cone2();
+  const int K = 3;
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  s.lambda = 1.3;
+  s.phi[0] = 0.8;   // phi''
+  s.phi[1] = -0.5;  // phi'''
+  e.surface = &B;
+  e.u = 1.0;
+  e.lambda = -0.7;
+  e.phi[0] = -0.4;
+  const double vs[3] = {HUGE_VAL, -0.5, 0.7};
+  for (int j = 0; j < 3; ++j) s.v[j] = e.v[j] = vs[j];
+  Surface X, Y;
+  ASSERT_EQ(make_ringed_blend(s, e, K, 0.0, 1.0, X), Status::ok);
+  BlendEnd s0 = s, e0 = e;
+  s0.phi[0] = s0.phi[1] = e0.phi[0] = 0.0;
+  ASSERT_EQ(make_ringed_blend(s0, e0, K, 0.0, 1.0, Y), Status::ok);
+  double x[3], y[3];
+  ASSERT_EQ(X.eval(0.5, 0.2, {x, nullptr, nullptr, nullptr}), Status::ok);
+  ASSERT_EQ(Y.eval(0.5, 0.2, {y, nullptr, nullptr, nullptr}), Status::ok);
+  EXPECT_GT(rel(Vec3d(x[0], x[1], x[2]), Vec3d(y[0], y[1], y[2])), 1e-3);  // another shape
+  const BlendEnd* ends[2] = {&s, &e};
+  for (int i = 0; i < 2; ++i) {
+    double jet[kMaxBlendOrder];
+    blend_jet(*ends[i], i, K, jet);
+    EXPECT_EQ(jet[0], ends[i]->lambda);
+    EXPECT_EQ(jet[1], ends[i]->phi[0]);
+    ContinuityReport R, P;
+    ASSERT_EQ(continuity_report(*ends[i]->surface, 1.0, jet, X, double(i), K, nullptr, 32, R),
+              Status::ok);
+    EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+    for (int l = 0; l <= K; ++l) EXPECT_LE(R.circle_jump[l], 1e-9) << i << " " << l;
+    ASSERT_EQ(continuity_report(*ends[i]->surface, 1.0, jet[0], X, double(i), K, nullptr, 32, P),
+              Status::ok);
+    EXPECT_GT(P.circle_jump[2], 1e-4) << i;
+  }
+}
+
 TEST(CanalBlend, K2IsG1) {
   const Surface A = cone1(), B = cone2();
   for (int K = 2; K <= 3; ++K) {

@@ -2249,6 +2249,7 @@ static void test_blends(cyc_context* ctx) {
   for (l = 0; l < 3; ++l) CHECK(fabs(d[l] - p[l]) < 1e-12 && fabs(d[3 + l] - du[l]) < 1e-12);
 
   /* Ringed blend K = 1 (Fig. 6), lambda chosen automatically (+1, -1). */
+  memset(&s, 0, sizeof s);
   s.surface = a;
   s.u = 1.0;
   s.v[0] = HUGE_VAL;

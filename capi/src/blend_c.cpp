@@ -25,6 +25,7 @@ BlendEnd end_of(const cyc_blend_end& e) {
   b.u = e.u;
   for (int j = 0; j < 3; ++j) b.v[j] = e.v[j];
   b.lambda = e.lambda;
+  for (int m = 0; m < kMaxBlendOrder - 1; ++m) b.phi[m] = e.phi[m];
   return b;
 }
 

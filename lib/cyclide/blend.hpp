@@ -30,12 +30,54 @@ Status derivatives_u(const Surface& S, double u, double v, int K, Vec3d* out);
 // (lambda > 0 if u is its domain's upper end) and lead into the second
 // (lambda > 0 if u is its domain's lower end). lambda = 0 chooses +-1 that way
 // (by the nearer end of the domain).
+//
+// The free Hermite scalars of the end are the derivatives of a
+// reparameterization u = phi(t) of the input at its end circle:
+// phi' = lambda (the tangent length) and phi'', phi''', ... = phi[0],
+// phi[1], ... (0 by default). The curves then take the derivatives of
+// x(phi(t), v) (Faa di Bruno), so every choice keeps the join geometrically
+// C^K (G^K: the blend meets the input up to a reparameterization) while it
+// changes the blend's shape; independent scale factors per order would not.
 struct BlendEnd {
   const Surface* surface = nullptr;
   double u = 0.0;
   double v[3] = {0.0, 0.0, 0.0};
   double lambda = 0.0;
+  double phi[kMaxBlendOrder - 1] = {};
 };
+
+// d^l/dt^l x(phi(t)), l = 0..K, from dx[k] = d^k x/du^k (k = 0..K) and
+// jet[m - 1] = phi^(m) (m = 1..K) at the end (Faa di Bruno, as the
+// composition of truncated series). Generic in the scalar of the jet
+// (double, or a Ceres Jet when the optimizer differentiates a blend with
+// respect to its free scalars).
+template <class S>
+void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
+  constexpr int N = kMaxBlendOrder;
+  Taylor<S, N> h;
+  double fact = 1.0;
+  for (int m = 1; m <= K; ++m) {
+    fact *= m;
+    h.c[m] = jet[m - 1] / S(fact);
+  }
+  for (int j = 0; j < 3; ++j) {
+    Taylor<double, N> f;
+    fact = 1.0;
+    for (int k = 0; k <= K; ++k) {
+      if (k > 0) fact *= k;
+      f.c[k] = dx[k][j] / fact;
+    }
+    const Taylor<S, N> r = compose(f, h);
+    fact = 1.0;
+    for (int l = 0; l <= K; ++l) {
+      if (l > 0) fact *= l;
+      out[l][j] = S(fact) * r.c[l];
+    }
+  }
+}
+
+// The jet (phi', phi'', ..., phi^(K)) of end `e` (index as blend_lambda).
+void blend_jet(const BlendEnd& e, int index, int K, double* jet);
 
 // The lambda used for end `e` (index 0: the blend's start, 1: its end).
 double blend_lambda(const BlendEnd& e, int index);
@@ -57,7 +99,8 @@ Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, doub
 // circle, at sample points x_A(uA, vA[i]); the corresponding point of B is
 // the closest point of B's circle (vB = B.parameter_of). lambda is the
 // chain-rule factor du_A/du_B: B's u-derivatives are compared with
-// lambda^l times A's.
+// lambda^l times A's (the jet overload: with the derivatives of
+// x_A(phi(u_B)), jet = phi', ..., phi^(K) as for BlendEnd).
 struct ContinuityReport {
   int K = 0;                 // derivative orders compared: 0..K
   int samples = 0;
@@ -83,6 +126,8 @@ struct ContinuityReport {
 // vA: n >= 1 sample parameters on A's circle (null: n parameters
 // v = tan(pi (i + 1/2)/n - pi/2), which cover the whole circle). K <= kMaxBlendOrder.
 Status continuity_report(const Surface& A, double uA, double lambda, const Surface& B,
+                         double uB, int K, const double* vA, int n, ContinuityReport& out);
+Status continuity_report(const Surface& A, double uA, const double* jet, const Surface& B,
                          double uB, int K, const double* vA, int n, ContinuityReport& out);
 
 }  // namespace v0

@@ -179,6 +179,21 @@ Taylor<T, M> truncate(const Taylor<T, N>& a) {
   return r;
 }
 
+// f(u0 + h(t)) for the series f around u0 and h with h(t0) = 0 (h.c[0] is
+// ignored): the composition, by Horner in h, truncated at order N. With
+// h = the derivatives of a reparameterization u = phi(t) it is Faa di
+// Bruno's formula: (f o phi)^(l)(t0) = l! r.c[l].
+template <class T, int N, class F>
+Taylor<T, N> compose(const Taylor<F, N>& f, Taylor<T, N> h) {
+  h.c[0] = T(0);
+  Taylor<T, N> r(T(f.c[N]));
+  for (int k = N - 1; k >= 0; --k) {
+    r = r * h;
+    r.c[0] += T(f.c[k]);
+  }
+  return r;
+}
+
 // The series of the derivative, exact to order N-1.
 template <class T, int N>
 Taylor<T, N - 1> derivative(const Taylor<T, N>& a) {

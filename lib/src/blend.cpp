@@ -115,6 +115,12 @@ double blend_lambda(const BlendEnd& e, int index) {
   return to_lower <= to_upper ? 1.0 : -1.0;
 }
 
+void blend_jet(const BlendEnd& e, int index, int K, double* jet) {
+  if (K < 1) return;
+  jet[0] = blend_lambda(e, index);
+  for (int m = 2; m <= K; ++m) jet[m - 1] = e.phi[m - 2];
+}
+
 namespace {
 
 Status blend_curves(const BlendEnd& start, const BlendEnd& end, int K, double t0, double t1,
@@ -124,26 +130,27 @@ Status blend_curves(const BlendEnd& start, const BlendEnd& end, int K, double t0
   if (!input_ok(start.u) || !input_ok(end.u) || !input_ok(t0) || !input_ok(t1) ||
       !input_ok(start.lambda) || !input_ok(end.lambda))
     return Status::not_finite;
+  for (int m = 2; m <= K; ++m)
+    if (!input_ok(start.phi[m - 2]) || !input_ok(end.phi[m - 2])) return Status::not_finite;
   if (!(t1 > t0)) return Status::bad_domain;
   for (int j = 0; j < count; ++j)
     if (std::isnan(start.v[j]) || std::isnan(end.v[j])) return Status::not_finite;
   const BlendEnd* ends[2] = {&start, &end};
   Vec3d d[2][3][kMaxBlendOrder + 1];
   for (int e = 0; e < 2; ++e) {
-    const double lambda = blend_lambda(*ends[e], e);
+    double jet[kMaxBlendOrder];
+    blend_jet(*ends[e], e, K, jet);
     for (int j = 0; j < count; ++j) {
-      if (Status st = derivatives_u(*ends[e]->surface, ends[e]->u, ends[e]->v[j], K, d[e][j]);
+      Vec3d dx[kMaxBlendOrder + 1];
+      if (Status st = derivatives_u(*ends[e]->surface, ends[e]->u, ends[e]->v[j], K, dx);
           st != Status::ok)
         return st;
-      double f = 1.0;
-      for (int l = 1; l <= K; ++l) {
-        f *= lambda;
-        d[e][j][l] *= f;
-        // lambda^l x^(l) beyond the input range of the Hermite solve (e.g.
-        // lambda = 1e60, K = 2): an overflow, not a non-finite input (fuzz_blend
-        // regress-blend-huge-lambda).
+      reparameterize(K, dx, jet, d[e][j]);
+      // lambda^l x^(l) beyond the input range of the Hermite solve (e.g.
+      // lambda = 1e60, K = 2): an overflow, not a non-finite input (fuzz_blend
+      // regress-blend-huge-lambda).
+      for (int l = 1; l <= K; ++l)
         if (!input_ok(d[e][j][l])) return Status::numerical_overflow;
-      }
     }
   }
   for (int j = 0; j < count; ++j)
@@ -187,18 +194,46 @@ Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, doub
 
 Status continuity_report(const Surface& A, double uA, double lambda, const Surface& B,
                          double uB, int K, const double* vA, int n, ContinuityReport& out) {
+  if (!input_ok(lambda)) return Status::not_finite;
+  const double jet[kMaxBlendOrder] = {lambda};
+  return continuity_report(A, uA, jet, B, uB, K, vA, n, out);
+}
+
+namespace {
+
+// A's series (in u_A) as series in u_B: composed with the jet of
+// u_A = phi(u_B) (Faa di Bruno).
+template <int N>
+Taylor<double, N> composed(const Taylor<double, N>& f, const double* jet) {
+  Taylor<double, N> h;
+  double fact = 1.0;
+  for (int m = 1; m <= N; ++m) {
+    fact *= m;
+    h.c[m] = jet[m - 1] / fact;
+  }
+  return compose(f, h);
+}
+template <int N>
+Vec3<Taylor<double, N>> composed(const Vec3<Taylor<double, N>>& f, const double* jet) {
+  return {composed(f[0], jet), composed(f[1], jet), composed(f[2], jet)};
+}
+
+}  // namespace
+
+Status continuity_report(const Surface& A, double uA, const double* jet, const Surface& B,
+                         double uB, int K, const double* vA, int n, ContinuityReport& out) {
   if (K < 0 || n < 1) return Status::invalid_argument;
   if (K > kMaxBlendOrder) return Status::degree_too_high;
-  if (!input_ok(uA) || !input_ok(uB) || !input_ok(lambda)) return Status::not_finite;
+  if (!jet) return Status::null_argument;
+  if (!input_ok(uA) || !input_ok(uB)) return Status::not_finite;
+  for (int m = 1; m <= K; ++m)
+    if (!input_ok(jet[m - 1])) return Status::not_finite;
   if (vA)
     for (int i = 0; i < n; ++i)
       if (std::isnan(vA[i])) return Status::not_finite;
   ContinuityReport R;
   R.K = K;
   R.samples = n;
-  double lpow[kMaxBlendOrder + 1];
-  lpow[0] = 1.0;
-  for (int l = 1; l <= K; ++l) lpow[l] = lpow[l - 1] * lambda;
 
   // The circle families.
   const Status cs = with_order(K, [&](auto order) -> Status {
@@ -207,13 +242,16 @@ Status continuity_report(const Surface& A, double uA, double lambda, const Surfa
     Taylor<double, N> ra, rb;
     if (Status s = circle_series<N>(A, uA, ca, na, ra); s != Status::ok) return s;
     if (Status s = circle_series<N>(B, uB, cb, nb, rb); s != Status::ok) return s;
+    ca = composed(ca, jet);
+    na = composed(na, jet);
+    ra = composed(ra, jet);
     const double sign = coeff(na, 0).dot(coeff(nb, 0)) < 0 ? -1.0 : 1.0;
     const double rad2 = std::abs(ra.c[0]);
     const double cscale = coeff(ca, 0).norm() + std::sqrt(rad2);
     for (int l = 0; l <= N; ++l) {
-      const double jc = (coeff(cb, l) - lpow[l] * coeff(ca, l)).norm() / cscale;
-      const double jn = (sign * coeff(nb, l) - lpow[l] * coeff(na, l)).norm();
-      const double jr = std::abs(deriv(rb, l) - lpow[l] * deriv(ra, l)) / rad2;
+      const double jc = (coeff(cb, l) - coeff(ca, l)).norm() / cscale;
+      const double jn = (sign * coeff(nb, l) - coeff(na, l)).norm();
+      const double jr = std::abs(deriv(rb, l) - deriv(ra, l)) / rad2;
       R.circle_jump[l] = std::max(jc, std::max(jn, jr));
       if (!std::isfinite(R.circle_jump[l])) return Status::numerical_overflow;
     }
@@ -226,14 +264,16 @@ Status continuity_report(const Surface& A, double uA, double lambda, const Surfa
   for (int i = 0; i < n; ++i) {
     const double v = vA ? vA[i] : std::tan(pi * (i + 0.5) / n - pi / 2);
     Vec3d da[kMaxBlendOrder + 1], db[kMaxBlendOrder + 1];
-    if (Status s = derivatives_u(A, uA, v, K, da); s != Status::ok) return s;
+    Vec3d xa[kMaxBlendOrder + 1];
+    if (Status s = derivatives_u(A, uA, v, K, xa); s != Status::ok) return s;
+    reparameterize(K, xa, jet, da);
     double vb = 0;
     if (Status s = B.parameter_of(uB, da[0], vb); s != Status::ok) return s;
     if (Status s = derivatives_u(B, uB, vb, K, db); s != Status::ok) return s;
     R.point_scale = std::max(R.point_scale, std::max(da[0].norm(), db[0].norm()));
     R.max_gap = std::max(R.max_gap, (da[0] - db[0]).norm());
     for (int l = 0; l <= K; ++l) {
-      const Vec3d a = lpow[l] * da[l];
+      const Vec3d& a = da[l];
       R.point_jump[l] = std::max(R.point_jump[l], (db[l] - a).norm());
       R.point_scale_l[l] = std::max(R.point_scale_l[l], std::max(a.norm(), db[l].norm()));
     }

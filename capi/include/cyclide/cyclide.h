@@ -520,16 +520,21 @@ CYC_API int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surfa
 
 /** One end of a blend: the end circle u of `surface`, the circle parameters
  *  v[j] of the chosen points (v[0], v[1] for canal blends; v[0..2] for
- *  ringed blends) and lambda = du/dt, the chain-rule factor: the blend's
- *  curves satisfy p_j^(l)(t_end) = lambda^l d^l x/du^l (u, v[j]). Its sign
- *  is the direction (the blend continues the start surface and leads into
- *  the end surface); lambda = 0 chooses +1 or -1 by the nearer end of the
- *  surface's domain. */
+ *  ringed blends) and the free Hermite scalars of the end: the derivatives
+ *  of a reparameterization u = phi(t) of the surface at its end circle,
+ *  lambda = phi' (the tangent length; its sign is the direction: the blend
+ *  continues the start surface and leads into the end surface; 0 chooses +1
+ *  or -1 by the nearer end of the surface's domain) and phi[m - 2] =
+ *  phi^(m) for m = 2..K (0: none). The blend's curves take the derivatives
+ *  d^l/dt^l x(phi(t), v[j]) (Faa di Bruno; with phi = 0 simply lambda^l
+ *  d^l x/du^l), so every choice keeps the join geometrically C^K.
+ *  Zero-initialize the struct ({0}) so that unused phi are 0. */
 typedef struct cyc_blend_end {
   const cyc_surface* surface;
   double u;
   double v[3];
   double lambda;
+  double phi[CYC_MAX_BLEND_ORDER - 1];
 } cyc_blend_end;
 
 /** Canal blend (§9.1): two C^K Hermite curves (degree 2K+1) on [t0, t1]
