@@ -18,11 +18,12 @@ inline namespace v0 {
 // The planes (24), (25), (26) at u as series of order K:
 //   M: n . X = n . p1,  B1: 2 (p1 - p2) . X = |p1|^2 - |p2|^2,
 //   B2: 2 (p1 - p3) . X = |p1|^2 - |p3|^2.
+// q1, q2, q3: the three curves at u as series of order K (the optimizer
+// passes Hermite curves whose coefficients are Jets).
 template <int K, class S>
-ThreePlanes<Taylor<S, K>> prrs_planes(const RationalCurve& p1, const RationalCurve& p2,
-                                       const RationalCurve& p3, const S& u) {
+ThreePlanes<Taylor<S, K>> prrs_planes(const Vec3<Taylor<S, K>>& q1, const Vec3<Taylor<S, K>>& q2,
+                                       const Vec3<Taylor<S, K>>& q3) {
   using T_ = Taylor<S, K>;
-  const auto q1 = p1.taylor<K>(u), q2 = p2.taylor<K>(u), q3 = p3.taylor<K>(u);
   const Vec3<T_> e2 = q1 - q2, e3 = q1 - q3;
   ThreePlanes<T_> T;
   T.n[0] = e2.cross(e3);
@@ -32,6 +33,12 @@ ThreePlanes<Taylor<S, K>> prrs_planes(const RationalCurve& p1, const RationalCur
   T.b[1] = q1.dot(q1) - q2.dot(q2);
   T.b[2] = q1.dot(q1) - q3.dot(q3);
   return T;
+}
+
+template <int K, class S>
+ThreePlanes<Taylor<S, K>> prrs_planes(const RationalCurve& p1, const RationalCurve& p2,
+                                       const RationalCurve& p3, const S& u) {
+  return prrs_planes<K, S>(p1.taylor<K>(u), p2.taylor<K>(u), p3.taylor<K>(u));
 }
 
 // For these planes det = 4 |n|^2 and the relative determinant is the sine

@@ -1,0 +1,543 @@
+// The blend optimizer (blend_optimizer.hpp, SPEC.md §8e): one residual
+// vector, generic in the scalar, differentiated by Ceres' Jets.
+#include "optim/blend_optimizer.hpp"
+
+#include <ceres/ceres.h>
+
+#include <chrono>
+#include <cmath>
+#include <type_traits>
+#include <vector>
+
+#include "cyclide/prcs.hpp"
+#include "cyclide/prrs.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+namespace optim {
+
+namespace {
+
+// The Hermite curves' series order at a node: the canal spine s needs the
+// curves to order 3 for s' to order 2 (x_tt needs the frame to order 2).
+constexpr int kOrder = 4;
+using Basis = Taylor<double, kOrder>;
+
+// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n from the
+// Chebyshev-like guess; n <= kMaxQuadrature).
+void gauss_legendre(int n, double* x, double* w) {
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = z;  // P_{k-1}, P_k
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n == 1 ? 1.0 : n * (z * p1 - p0) / (z * z - 1);
+      const double step = p1 / dp;
+      z -= step;
+      if (std::abs(step) <= 1e-16) break;
+    }
+    x[i] = z;
+    w[i] = 2.0 / ((1 - z * z) * dp * dp);
+  }
+}
+
+// Everything the residuals need, fixed during the solve.
+struct Problem {
+  BlendKind kind = BlendKind::canal;
+  int K = 0, count = 0, free = 0;
+  double t0 = 0, t1 = 1;
+  Vec3d D[2][3][kMaxBlendOrder + 1];  // d^k x/du^k at the chosen points
+  double jet0[2][kMaxBlendOrder] = {};  // the jets of orders above `free`
+  int nt = 0, nz = 0;
+  double tw[kMaxQuadrature] = {}, zn[kMaxQuadrature] = {}, zw[kMaxQuadrature] = {};
+  std::vector<Basis> B;   // [node][e][l]: the Hermite basis at the t nodes
+  std::vector<Basis> TB;  // [target][e][l]: at the targets' t
+  BlendObjective obj;
+  std::vector<TargetPoint> targets;
+  std::vector<SphereObstacle> obstacles;
+  double L = 1;           // length scale
+  double fair_norm = 1;   // 1 / sqrt(the start's fairness integral)
+
+  int slots() const { return 2 * (K + 1); }
+  const Basis* basis(int node) const { return &B[size_t(node) * slots()]; }
+  int per_node() const { return 1 + int(obstacles.size()) + 2 * nz * (9 + 1); }
+  int residuals() const { return nt * per_node() + 2 * int(targets.size()); }
+};
+
+// The objective's terms (for the summary; double evaluation only).
+struct Terms {
+  double fairness = 0, regularity = 0, targets = 0, obstacles = 0;
+};
+
+template <class T>
+T hinge(const T& q) {
+  return value_of(q) > 0 ? q : T(0.0);
+}
+
+template <class T>
+T sqrt_of(const T& x) {
+  using std::sqrt;
+  return sqrt(x);
+}
+
+// |det(n1, n2, n3)| / (|n1| |n2| |n3|) of the planes' values, as a T.
+template <class T, int N>
+T relative_det(const ThreePlanes<Taylor<T, N>>& P) {
+  Vec3<T> n[3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) n[i][j] = P.n[i][j].c[0];
+  const T det = n[0].dot(n[1].cross(n[2]));
+  const T den = sqrt_of(T(n[0].squaredNorm() * n[1].squaredNorm() * n[2].squaredNorm()));
+  return (value_of(det) < 0 ? -det : det) / den;
+}
+
+// The curves p_j at a node: sum over ends and orders of basis * data.
+template <class T>
+void curves_at(const Problem& P, const Basis* b, const Vec3<T> (&d)[2][3][kMaxBlendOrder + 1],
+               Vec3<Taylor<T, kOrder>>* Q) {
+  for (int j = 0; j < P.count; ++j)
+    for (int c = 0; c < 3; ++c) {
+      Taylor<T, kOrder> s;
+      for (int e = 0; e < 2; ++e)
+        for (int l = 0; l <= P.K; ++l) {
+          const Basis& h = b[e * (P.K + 1) + l];
+          for (int k = 0; k <= kOrder; ++k) s.c[k] += h.c[k] * d[e][j][l][c];
+        }
+      Q[j][c] = s;
+    }
+}
+
+// The blend's circle frame at a node to order 2 (PRCS or PRRS on the
+// series), f = v; false where the planes are dependent (a Ceres step that
+// leaves the valid region is rejected and shortened).
+template <class T>
+bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
+              CircleFrame<Taylor<T, 2>>& F, T& rd) {
+  if (P.kind == BlendKind::canal) {
+    static const RationalCurve polynomial;  // not a line element: n = p'
+    const auto planes = prcs_planes<3, T>(polynomial, polynomial, Q[0], Q[1]);
+    rd = relative_det(planes);
+    if (!(value_of(rd) > kDependentPlanesTol)) return false;
+    const Vec3<Taylor<T, 3>> s = intersect(planes);
+    F.o = truncate<2>(s);
+    F.a = derivative(s);
+    F.p = truncate<2>(Q[0]);
+  } else {
+    const Vec3<Taylor<T, 2>> q1 = truncate<2>(Q[0]), q2 = truncate<2>(Q[1]),
+                             q3 = truncate<2>(Q[2]);
+    const auto planes = prrs_planes<2, T>(q1, q2, q3);
+    rd = relative_det(planes);
+    if (!(value_of(rd) > kDependentPlanesTol)) return false;
+    F.o = intersect(planes);
+    F.a = planes.n[0];
+    F.p = q1;
+  }
+  F.alpha = Taylor<T, 2>(1.0);
+  F.beta = Taylor<T, 2>(0.0);
+  F.gamma = Taylor<T, 2>(0.0);
+  F.delta = Taylor<T, 2>(1.0);
+  for (int j = 0; j < 3; ++j)
+    if (!std::isfinite(value_of(F.o[j])) || !std::isfinite(value_of(F.a[j]))) return false;
+  return true;
+}
+
+// x(t, z) near a node as a series in z (chart 0: v = z; chart 1: v = 1/z)
+// whose coefficients are series in t: the rotation formula on nested series.
+template <class T>
+void point_series2(const CircleFrame<Taylor<T, 2>>& F, int chart, double z,
+                   Vec3<Taylor<Taylor<T, 2>, 2>>& x) {
+  using U = Taylor<T, 2>;
+  using Z = Taylor<U, 2>;
+  const Vec3<U> d = F.p - F.o;
+  const U aa = F.a.dot(F.a), ad = F.a.dot(d);
+  const Vec3<U> axd = F.a.cross(d);
+  const Z var = Z::variable(U(z)), one(U(1.0)), two(U(2.0));
+  const Z W = chart == 0 ? var : one, G = chart == 0 ? one : var;
+  const Z W2 = W * W, G2 = G * G, AA(aa), AD(ad);
+  const Z den = W2 + G2 * AA;
+  for (int j = 0; j < 3; ++j)
+    x[j] = Z(F.o[j]) +
+           ((W2 - G2 * AA) * Z(d[j]) + two * G2 * AD * Z(F.a[j]) + two * W * G * Z(axd[j])) / den;
+}
+
+// A point X against the circle of the frame (values): its height h over the
+// circle's plane and its distance rho - r from the circle's cylinder, so
+// that the distance to the circle is hypot(h, rho - r) (closed form: the
+// surfaces are families of circles, so clearance and targets need no
+// sampling along v).
+template <class T>
+void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T& radial) {
+  Vec3<T> o, a, p;
+  for (int c = 0; c < 3; ++c) {
+    o[c] = F.o[c].c[0];
+    a[c] = F.a[c].c[0];
+    p[c] = F.p[c].c[0];
+  }
+  const Vec3<T> dd = p - o;
+  const T aa = a.squaredNorm(), ad = a.dot(dd);
+  const Vec3<T> center = o + (ad / aa) * a, n = a / sqrt_of(aa);
+  const T radius = sqrt_of(T(dd.squaredNorm() - ad * ad / aa));
+  const Vec3<T> w = X.cast<T>() - center;
+  h = w.dot(n);
+  radial = sqrt_of(T((w - h * n).squaredNorm())) - radius;
+}
+
+// The residual vector (layout: per t node the determinant hinge, one
+// clearance hinge per obstacle, then per chart and z node 9 fairness and 1
+// speed hinge; then 2 per target).
+template <class T>
+bool evaluate(const Problem& P, const T* params, T* r, Terms* terms) {
+  T jet[2][kMaxBlendOrder];
+  for (int e = 0; e < 2; ++e)
+    for (int m = 0; m < P.K; ++m) jet[e][m] = m < P.free ? params[e * P.free + m] : T(P.jet0[e][m]);
+  Vec3<T> d[2][3][kMaxBlendOrder + 1];
+  for (int e = 0; e < 2; ++e)
+    for (int j = 0; j < P.count; ++j) reparameterize(P.K, P.D[e][j], jet[e], d[e][j]);
+  const BlendObjective& O = P.obj;
+  const T w_reg(std::sqrt(O.regularity)), w_obs(std::sqrt(O.obstacle_weight)),
+      w_tgt(std::sqrt(O.target_weight));
+  const double half = 0.5 * (P.t1 - P.t0);
+  auto add = [&](double Terms::*field, const T& v) {
+    if constexpr (std::is_same<T, double>::value) {
+      if (terms) terms->*field += 0.5 * v * v;
+    }
+  };
+  int k = 0;
+  for (int i = 0; i < P.nt; ++i) {
+    Vec3<Taylor<T, kOrder>> Q[3];
+    curves_at(P, P.basis(i), d, Q);
+    CircleFrame<Taylor<T, 2>> F;
+    T rd;
+    if (!frame_of(P, Q, F, rd)) return false;
+    r[k] = w_reg * hinge(T((O.min_determinant - rd) / O.min_determinant));
+    add(&Terms::regularity, r[k++]);
+    for (const SphereObstacle& S : P.obstacles) {
+      T h, radial;
+      circle_offsets(F, S.center, h, radial);
+      const T dist = sqrt_of(T(h * h + radial * radial + 1e-300));
+      r[k] = w_obs * hinge(T((S.radius + O.clearance - dist) / P.L));
+      add(&Terms::obstacles, r[k++]);
+    }
+    for (int chart = 0; chart < 2; ++chart)
+      for (int j = 0; j < P.nz; ++j) {
+        Vec3<Taylor<Taylor<T, 2>, 2>> x;
+        point_series2(F, chart, P.zn[j], x);
+        const double wq = std::sqrt(O.fairness * P.tw[i] * half * P.zw[j]) * P.fair_norm;
+        Vec3<T> xt;
+        for (int c = 0; c < 3; ++c) {
+          xt[c] = x[c].c[0].c[1];
+          r[k + c] = T(2.0 * wq) * x[c].c[0].c[2];                  // x_tt
+          r[k + 3 + c] = T(std::sqrt(2.0) * wq) * x[c].c[1].c[1];   // x_tz
+          r[k + 6 + c] = T(2.0 * wq) * x[c].c[2].c[0];              // x_zz
+        }
+        for (int c = 0; c < 9; ++c) add(&Terms::fairness, r[k + c]);
+        k += 9;
+        const T speed = sqrt_of(T(xt.squaredNorm()));
+        r[k] = w_reg * hinge(T((O.min_speed * P.L - speed) / (O.min_speed * P.L + 1e-300)));
+        add(&Terms::regularity, r[k++]);
+      }
+  }
+  for (size_t q = 0; q < P.targets.size(); ++q) {
+    Vec3<Taylor<T, kOrder>> Q[3];
+    curves_at(P, &P.TB[q * P.slots()], d, Q);
+    CircleFrame<Taylor<T, 2>> F;
+    T rd;
+    if (!frame_of(P, Q, F, rd)) return false;
+    T h, radial;
+    circle_offsets(F, P.targets[q].point, h, radial);
+    r[k] = w_tgt * h / P.L;
+    add(&Terms::targets, r[k++]);
+    r[k] = w_tgt * radial / P.L;
+    add(&Terms::targets, r[k++]);
+  }
+  for (int q = 0; q < k; ++q)
+    if (!std::isfinite(value_of(r[q]))) return false;
+  return true;
+}
+
+struct Residuals {
+  const Problem* P;
+  template <class T>
+  bool operator()(T const* const* params, T* r) const {
+    return evaluate(*P, params[0], r, nullptr);
+  }
+};
+
+// Cost 1/2 |r|^2 at params (double), with its terms; false if invalid.
+bool cost_at(const Problem& P, const std::vector<double>& params, double& cost, Terms& terms) {
+  std::vector<double> r(size_t(P.residuals()));
+  terms = Terms{};
+  if (!evaluate(P, params.data(), r.data(), &terms)) return false;
+  cost = terms.fairness + terms.regularity + terms.targets + terms.obstacles;
+  return std::isfinite(cost);
+}
+
+bool finite_nonneg(double x) { return std::isfinite(x) && x >= 0; }
+
+Status check_inputs(BlendKind kind, int K, const BlendObjective& O, const BlendOptions& B) {
+  if (kind != BlendKind::canal && kind != BlendKind::ringed) return Status::invalid_argument;
+  if (K < (kind == BlendKind::canal ? 2 : 1)) return Status::invalid_argument;
+  if (K > kMaxBlendOrder) return Status::degree_too_high;
+  const double nums[] = {O.fairness, O.regularity, O.min_determinant, O.min_speed,
+                         O.target_weight, O.clearance, O.obstacle_weight,
+                         B.lambda_min_ratio, B.lambda_max_ratio, B.higher_bound,
+                         B.function_tolerance, B.gradient_tolerance, B.parameter_tolerance};
+  for (double x : nums)
+    if (!std::isfinite(x)) return Status::not_finite;
+  for (double x : nums)
+    if (!finite_nonneg(x)) return Status::invalid_argument;
+  if (!(O.min_determinant > 0 && O.min_determinant < 1) || !(O.min_speed > 0))
+    return Status::invalid_argument;
+  if (O.quadrature_t < 1 || O.quadrature_t > kMaxQuadrature || O.quadrature_v < 1 ||
+      O.quadrature_v > kMaxQuadrature)
+    return Status::invalid_argument;
+  if (O.target_count < 0 || O.obstacle_count < 0) return Status::invalid_argument;
+  if ((O.target_count > 0 && !O.targets) || (O.obstacle_count > 0 && !O.obstacles))
+    return Status::null_argument;
+  for (int q = 0; q < O.target_count; ++q)
+    if (!input_ok(O.targets[q].point) || !input_ok(O.targets[q].t)) return Status::not_finite;
+  for (int q = 0; q < O.obstacle_count; ++q) {
+    if (!input_ok(O.obstacles[q].center) || !input_ok(O.obstacles[q].radius))
+      return Status::not_finite;
+    if (!(O.obstacles[q].radius >= 0)) return Status::invalid_argument;
+  }
+  if (!(B.lambda_min_ratio > 0) || !(B.lambda_min_ratio <= 1) || !(B.lambda_max_ratio >= 1))
+    return Status::invalid_argument;
+  if (B.free_orders < 0 || B.free_orders > K || B.max_iterations < 0)
+    return Status::invalid_argument;
+  return Status::ok;
+}
+
+// The blend for the jets (lambda, phi[]) of both ends.
+Status build(BlendKind kind, BlendEnd s, BlendEnd e, const double (&jet)[2][kMaxBlendOrder],
+             int K, double t0, double t1, Surface& out, double* bad, BlendEnd* so, BlendEnd* eo) {
+  BlendEnd* ends[2] = {&s, &e};
+  for (int i = 0; i < 2; ++i) {
+    ends[i]->lambda = jet[i][0];
+    for (int m = 2; m <= K; ++m) ends[i]->phi[m - 2] = jet[i][m - 1];
+  }
+  const Status st = kind == BlendKind::canal ? make_canal_blend(s, e, K, t0, t1, out, bad)
+                                             : make_ringed_blend(s, e, K, t0, t1, out, bad);
+  if (st == Status::ok) {
+    if (so) *so = s;
+    if (eo) *eo = e;
+  }
+  return st;
+}
+
+// L: the size of the two end circles and their distance.
+double length_scale(const BlendEnd& s, const BlendEnd& e) {
+  Vec3d c[2], n;
+  double r2[2] = {0, 0};
+  const BlendEnd* ends[2] = {&s, &e};
+  for (int i = 0; i < 2; ++i)
+    if (ends[i]->surface->circle(ends[i]->u, c[i], n, r2[i]) != Status::ok) return 1.0;
+  const double L = (c[0] - c[1]).norm() + std::sqrt(std::max(0.0, r2[0])) +
+                   std::sqrt(std::max(0.0, r2[1]));
+  return L > 0 && std::isfinite(L) ? L : 1.0;
+}
+
+// The Hermite basis series at t: slot (e, l) is the curve with unit data
+// there (x component), zero elsewhere.
+Status basis_at(int K, double t0, double t1, const RationalCurve* unit, double t, Basis* out) {
+  for (int q = 0; q < 2 * (K + 1); ++q) out[q] = unit[q].taylor<kOrder>(t)[0];
+  for (int q = 0; q < 2 * (K + 1); ++q)
+    for (int k = 0; k <= kOrder; ++k)
+      if (!std::isfinite(out[q].c[k])) return Status::numerical_overflow;
+  (void)t0;
+  (void)t1;
+  return Status::ok;
+}
+
+}  // namespace
+
+Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end, int K,
+                      double t0, double t1, const BlendObjective& objective,
+                      const BlendOptions& options, Surface& out, BlendEnd* start_out,
+                      BlendEnd* end_out, BlendSummary& summary, double* bad_t) {
+  const auto clock0 = std::chrono::steady_clock::now();
+  if (!start.surface || !end.surface) return Status::null_argument;
+  if (Status st = check_inputs(kind, K, objective, options); st != Status::ok) return st;
+
+  // The start: the given jets, else the lambdas scaled (within the bounds).
+  double jet0[2][kMaxBlendOrder] = {};
+  blend_jet(start, 0, K, jet0[0]);
+  blend_jet(end, 1, K, jet0[1]);
+  for (int e = 0; e < 2; ++e)
+    for (int m = 0; m < K; ++m)
+      if (!input_ok(jet0[e][m])) return Status::not_finite;
+  if (jet0[0][0] == 0 || jet0[1][0] == 0) return Status::invalid_argument;
+  Surface S0;
+  double jet[2][kMaxBlendOrder];
+  Status first = Status::ok;
+  bool found = false;
+  for (double f : {1.0, 0.5, 2.0, 0.25, 4.0}) {
+    if (f < options.lambda_min_ratio || f > options.lambda_max_ratio) continue;
+    std::copy(&jet0[0][0], &jet0[0][0] + 2 * kMaxBlendOrder, &jet[0][0]);
+    jet[0][0] *= f;
+    jet[1][0] *= f;
+    double bad = 0;
+    const Status st = build(kind, start, end, jet, K, t0, t1, S0, &bad, nullptr, nullptr);
+    if (st == Status::ok) {
+      found = true;
+      break;
+    }
+    if (f == 1.0) {
+      first = st;
+      if (bad_t) *bad_t = bad;
+    }
+    // Inputs that are invalid as such do not improve with other lambdas.
+    if (st != Status::dependent_planes && st != Status::collinear_points &&
+        st != Status::zero_tangent && st != Status::singular_point &&
+        st != Status::degenerate_circle_parameter)
+      return st;
+  }
+  if (!found) return first;
+
+  // The problem.
+  Problem P;
+  P.kind = kind;
+  P.K = K;
+  P.count = kind == BlendKind::canal ? 2 : 3;
+  P.free = options.free_orders > 0 ? options.free_orders : std::min(K, 2);
+  P.t0 = t0;
+  P.t1 = t1;
+  std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &P.jet0[0][0]);
+  const BlendEnd* ends[2] = {&start, &end};
+  for (int e = 0; e < 2; ++e)
+    for (int j = 0; j < P.count; ++j)
+      if (Status st = derivatives_u(*ends[e]->surface, ends[e]->u, ends[e]->v[j], K, P.D[e][j]);
+          st != Status::ok)
+        return st;
+  P.obj = objective;
+  P.targets.assign(objective.targets, objective.targets + objective.target_count);
+  P.obstacles.assign(objective.obstacles, objective.obstacles + objective.obstacle_count);
+  P.L = length_scale(start, end);
+  P.nt = objective.quadrature_t;
+  P.nz = objective.quadrature_v;
+  double tn[kMaxQuadrature];
+  gauss_legendre(P.nt, tn, P.tw);
+  gauss_legendre(P.nz, P.zn, P.zw);
+  // The Hermite basis: curves with unit data in one slot.
+  RationalCurve unit[2 * (kMaxBlendOrder + 1)];
+  for (int e = 0; e < 2; ++e)
+    for (int l = 0; l <= K; ++l) {
+      Vec3d a[kMaxBlendOrder + 1], b[kMaxBlendOrder + 1];
+      for (int q = 0; q <= K; ++q) a[q] = b[q] = Vec3d::Zero();
+      (e == 0 ? a : b)[l] = Vec3d(1, 0, 0);
+      if (Status st = make_hermite_curve(K, t0, t1, a, b, unit[e * (K + 1) + l]);
+          st != Status::ok)
+        return st;
+    }
+  P.B.resize(size_t(P.nt) * P.slots());
+  for (int i = 0; i < P.nt; ++i) {
+    const double t = 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * tn[i];
+    if (Status st = basis_at(K, t0, t1, unit, t, &P.B[size_t(i) * P.slots()]); st != Status::ok)
+      return st;
+  }
+  P.TB.resize(P.targets.size() * P.slots());
+  for (size_t q = 0; q < P.targets.size(); ++q)
+    if (Status st = basis_at(K, t0, t1, unit, P.targets[q].t, &P.TB[q * P.slots()]);
+        st != Status::ok)
+      return st;
+
+  // Bounds, the start point (clamped into them) and the fairness
+  // normalizer: the start blend's fairness integral F0, so that the
+  // fairness term is weight * F / F0 / 2 (1/2 the weight at the start).
+  std::vector<double> x(size_t(2 * P.free)), lo(x.size()), hi(x.size());
+  for (int e = 0; e < 2; ++e) {
+    const double l0 = jet0[e][0], a = std::abs(l0);
+    const size_t b = size_t(e * P.free);
+    lo[b] = l0 > 0 ? options.lambda_min_ratio * a : -options.lambda_max_ratio * a;
+    hi[b] = l0 > 0 ? options.lambda_max_ratio * a : -options.lambda_min_ratio * a;
+    for (int m = 1; m < P.free; ++m) {
+      lo[b + m] = -options.higher_bound * a;
+      hi[b + m] = options.higher_bound * a;
+    }
+    for (int m = 0; m < P.free; ++m)
+      x[b + m] = std::min(std::max(jet[e][m], lo[b + m]), hi[b + m]);
+  }
+  Terms terms0;
+  double cost0 = 0;
+  P.obj.fairness = 1.0;
+  if (!cost_at(P, x, cost0, terms0)) return Status::dependent_planes;
+  const double F0 = 2 * terms0.fairness;
+  P.fair_norm = F0 > 0 ? 1.0 / std::sqrt(F0) : 1.0;
+  P.obj.fairness = objective.fairness;
+  if (!cost_at(P, x, cost0, terms0)) return Status::dependent_planes;
+  const std::vector<double> x_start = x;
+
+  // Solve.
+  ceres::Problem problem;
+  auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(new Residuals{&P});
+  cost->AddParameterBlock(2 * P.free);
+  cost->SetNumResiduals(P.residuals());
+  problem.AddResidualBlock(cost, nullptr, x.data());
+  for (size_t q = 0; q < x.size(); ++q) {
+    problem.SetParameterLowerBound(x.data(), int(q), lo[q]);
+    problem.SetParameterUpperBound(x.data(), int(q), hi[q]);
+  }
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = options.max_iterations;
+  so.function_tolerance = options.function_tolerance;
+  so.gradient_tolerance = options.gradient_tolerance;
+  so.parameter_tolerance = options.parameter_tolerance;
+  so.logging_type = ceres::SILENT;
+  so.num_threads = 1;
+  ceres::Solver::Summary cs;
+  if (options.max_iterations > 0) ceres::Solve(so, &problem, &cs);
+
+  // The result: the optimum if it is a valid blend no worse than the start.
+  BlendSummary R;
+  R.initial_cost = cost0;
+  R.iterations = options.max_iterations > 0 ? int(cs.iterations.size()) - 1 : 0;
+  R.termination = cs.termination_type == ceres::NO_CONVERGENCE ? BlendTermination::iteration_limit
+                                                               : BlendTermination::converged;
+  R.length_scale = P.L;
+  R.fairness_scale = F0;
+  double cost1 = 0;
+  Terms terms1;
+  bool use = cost_at(P, x, cost1, terms1) && cost1 <= cost0;
+  Surface S1;
+  BlendEnd s1, e1;
+  if (use) {
+    double jet1[2][kMaxBlendOrder];
+    std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &jet1[0][0]);
+    for (int e = 0; e < 2; ++e)
+      for (int m = 0; m < P.free; ++m) jet1[e][m] = x[size_t(e * P.free + m)];
+    use = build(kind, start, end, jet1, K, t0, t1, S1, nullptr, &s1, &e1) == Status::ok;
+  }
+  if (!use) {
+    double jets[2][kMaxBlendOrder];
+    std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &jets[0][0]);
+    for (int e = 0; e < 2; ++e)
+      for (int m = 0; m < P.free; ++m) jets[e][m] = x_start[size_t(e * P.free + m)];
+    if (Status st = build(kind, start, end, jets, K, t0, t1, S1, bad_t, &s1, &e1);
+        st != Status::ok)
+      return st;
+    cost1 = cost0;
+    terms1 = terms0;
+    R.termination = BlendTermination::reverted;
+  }
+  R.final_cost = cost1;
+  R.fairness = terms1.fairness;
+  R.regularity = terms1.regularity;
+  R.targets = terms1.targets;
+  R.obstacles = terms1.obstacles;
+  R.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();
+  out = S1;
+  if (start_out) *start_out = s1;
+  if (end_out) *end_out = e1;
+  summary = R;
+  return Status::ok;
+}
+
+}  // namespace optim
+}  // namespace v0
+}  // namespace cyclide

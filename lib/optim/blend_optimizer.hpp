@@ -1,0 +1,108 @@
+// The optimizer of a blend's free parameters (issue 4 item 6; SPEC.md §8e):
+// the jets (phi', phi'', ...) of both ends of a canal or ringed blend
+// (seed 000 §9; blend.hpp BlendEnd) chosen by Levenberg-Marquardt (Ceres)
+// against a weighted sum of
+//   fairness    the integral of |x_tt|^2 + 2 |x_tv|^2 + |x_vv|^2 over the
+//               blend (Gauss-Legendre in t, both charts v in [-1, 1] and
+//               1/v in [-1, 1] of the circle), relative to the start blend's;
+//   regularity  hinge penalties that keep the PRCS/PRRS planes' relative
+//               determinant above min_determinant (the paper's weakness:
+//               parallel normal planes) and |x_t| above min_speed L;
+//   targets     the blend's circle at t_k passing through X_k (closed-form
+//               point-circle distance, relative to L);
+//   obstacles   clearance of every circle at the t nodes from spheres
+//               (closed-form point-circle distance from the center, hinge).
+// L is the length scale of the two end circles. Derivatives are exact:
+// Ceres Jets through the same series code (reparameterize, Hermite basis,
+// prcs_planes / prrs_planes, intersect, the rotation formula). This is the
+// one tier that allocates (Ceres).
+#pragma once
+
+#include "cyclide/blend.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+namespace optim {
+
+enum class BlendKind : int { canal = 0, ringed = 1 };
+
+struct SphereObstacle {
+  Vec3d center = Vec3d::Zero();
+  double radius = 0.0;
+};
+
+// The blend's circle at parameter t should pass through point.
+struct TargetPoint {
+  Vec3d point = Vec3d::Zero();
+  double t = 0.0;
+};
+
+constexpr int kMaxQuadrature = 16;
+
+struct BlendObjective {
+  double fairness = 1.0;           // weight of the fairness integral
+  double regularity = 1.0;         // weight of the hinge penalties
+  double min_determinant = 1e-2;   // relative plane determinant kept above this
+  double min_speed = 1e-2;         // |x_t| kept above min_speed * L
+  const TargetPoint* targets = nullptr;
+  int target_count = 0;
+  double target_weight = 1.0;
+  const SphereObstacle* obstacles = nullptr;
+  int obstacle_count = 0;
+  double clearance = 0.0;          // wanted distance beyond each radius
+  double obstacle_weight = 1.0;
+  int quadrature_t = 8;            // Gauss-Legendre nodes in t (1..16)
+  int quadrature_v = 4;            // nodes per circle chart (1..16)
+};
+
+struct BlendOptions {
+  // Free derivative orders per end: 1 = the tangent lengths phi' only,
+  // m = phi', ..., phi^(m); 0 = min(K, 2). Orders above are kept as given.
+  int free_orders = 0;
+  // |phi'| stays in [lambda_min_ratio, lambda_max_ratio] |lambda_0| with the
+  // sign of lambda_0 (the start value); |phi^(m)| <= higher_bound |lambda_0|.
+  double lambda_min_ratio = 0.25;
+  double lambda_max_ratio = 4.0;
+  double higher_bound = 4.0;
+  int max_iterations = 50;
+  double function_tolerance = 1e-8;
+  double gradient_tolerance = 1e-10;
+  double parameter_tolerance = 1e-8;
+};
+
+enum class BlendTermination : int {
+  converged = 0,        // a Ceres tolerance was met
+  iteration_limit = 1,  // max_iterations reached (the best point is kept)
+  reverted = 2,         // the optimum did not give a valid blend: the start is returned
+};
+
+struct BlendSummary {
+  double initial_cost = 0.0;  // the objective at the start (the defaults)
+  double final_cost = 0.0;    // at the returned blend (<= initial_cost)
+  int iterations = 0;
+  double seconds = 0.0;
+  BlendTermination termination = BlendTermination::converged;
+  // The objective's terms at the returned blend (each already weighted).
+  double fairness = 0.0, regularity = 0.0, targets = 0.0, obstacles = 0.0;
+  double length_scale = 0.0;  // L
+  double fairness_scale = 0.0;  // the start blend's fairness integral (normalizer)
+};
+
+// Optimizes the jets of start and end (their lambda and phi[] are the start
+// values; lambda = 0 means blend_lambda's default) and writes the blend to
+// out and the chosen jets to start_out / end_out (may be null). If the
+// start blend is degenerate, the lambdas scaled by 1/2, 2, 1/4, 4 are tried
+// as starts; if all fail, that status (with *bad_t) is returned. Statuses:
+// invalid_argument (weights < 0, quadrature outside 1..16, bounds with
+// lambda_min_ratio > lambda_max_ratio or <= 0, K outside the blend's range,
+// obstacle radius < 0, counts < 0 or a null array with a positive count),
+// not_finite (any non-finite number in objective or options), and those of
+// make_canal_blend / make_ringed_blend. Nothing is written on error.
+Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end, int K,
+                      double t0, double t1, const BlendObjective& objective,
+                      const BlendOptions& options, Surface& out, BlendEnd* start_out,
+                      BlendEnd* end_out, BlendSummary& summary, double* bad_t = nullptr);
+
+}  // namespace optim
+}  // namespace v0
+}  // namespace cyclide
