@@ -44,9 +44,19 @@ bool random_surface(bool canal, const Vec3d& offset, Surface& S) {
   return st == Status::ok;
 }
 
-double random_v() {
-  const int k = *rc::gen::inRange(0, 9);
-  return k == 0 ? HUGE_VAL : std::tan(*rc::gen::inRange(-150, 151) / 100.0);
+// count circle parameters spread over the circle: atan(v_j) = phi0 +
+// j pi/count + a jitter of up to 0.2, wrapped into (-pi/2, pi/2]; the
+// first one is the generator v = inf one time in nine.
+void random_vs(double* v, int count) {
+  const double pi = std::acos(-1.0);
+  const double phi0 = *rc::gen::inRange(-157, 158) / 100.0;
+  for (int j = 0; j < count; ++j) {
+    double phi = phi0 + j * pi / count + *rc::gen::inRange(-20, 21) / 100.0;
+    while (phi > pi / 2) phi -= pi;
+    while (phi <= -pi / 2) phi += pi;
+    v[j] = std::abs(phi - pi / 2) < 1e-9 ? HUGE_VAL : std::tan(phi);
+  }
+  if (*rc::gen::inRange(0, 9) == 0) v[0] = HUGE_VAL;
 }
 
 void check_join(const Surface& In, double u, double lambda, const Surface& X, double t, int K,
@@ -98,10 +108,8 @@ RC_GTEST_PROP(BlendProperties, RingedBlendIsCKOrDegenerate, ()) {
   s.u = 1.0;
   e.surface = &B;
   e.u = 0.0;
-  for (int j = 0; j < 3; ++j) {
-    s.v[j] = random_v();
-    e.v[j] = random_v();
-  }
+  random_vs(s.v, 3);
+  random_vs(e.v, 3);
   RC_PRE(points_apart(A, s.u, s.v, 3) && points_apart(B, e.u, e.v, 3));
   Surface X;
   double bad = -1;
@@ -125,10 +133,8 @@ RC_GTEST_PROP(BlendProperties, CanalBlendIsG1OrDegenerate, ()) {
   s.u = 1.0;
   e.surface = &B;
   e.u = 0.0;
-  for (int j = 0; j < 2; ++j) {
-    s.v[j] = random_v();
-    e.v[j] = random_v();
-  }
+  random_vs(s.v, 2);
+  random_vs(e.v, 2);
   RC_PRE(points_apart(A, s.u, s.v, 2) && points_apart(B, e.u, e.v, 2));
   Surface X;
   double bad = -1;

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <string>
 
 #include "cyclide/cyclide.h"
 
@@ -79,4 +81,149 @@ TEST(Optimizer, ErrorsLeaveOutputsUntouched) {
             CYC_E_NULL_ARGUMENT);
   EXPECT_EQ(cyc_optimize_closest_point(nullptr, f.s, O, &u, &v, nullptr, nullptr),
             CYC_E_NULL_ARGUMENT);
+}
+
+// ------------------------------------------------------------ cyc_optimize_blend
+
+namespace {
+
+cyc_surface* cone(cyc_context* ctx, const double A[3], const double e1[3], const double e2[3],
+                  const double e3[3]) {
+  cyc_curve* L[3] = {nullptr, nullptr, nullptr};
+  for (int k = 0; k < 3; ++k) {
+    const double t = 2.0 * std::acos(-1.0) * k / 3 + 0.3;
+    double d[3];
+    for (int j = 0; j < 3; ++j) d[j] = std::cos(t) * e1[j] + std::sin(t) * e2[j] + e3[j];
+    EXPECT_EQ(cyc_curve_create_line(ctx, A, d, &L[k]), CYC_OK);
+  }
+  cyc_surface* S = nullptr;
+  EXPECT_EQ(cyc_prrs_create(ctx, L[0], L[1], L[2], nullptr, 0.5, 1.0, &S), CYC_OK);
+  for (cyc_curve* l : L) cyc_curve_destroy(ctx, l);
+  return S;
+}
+
+struct Fig6 {
+  cyc_context* ctx = nullptr;
+  cyc_surface *a = nullptr, *b = nullptr;
+  cyc_blend_end s{}, e{};
+  Fig6() {
+    EXPECT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+    const double O[3] = {0, 0, 0}, A2[3] = {4, 0, 4}, X[3] = {1, 0, 0}, Y[3] = {0, 1, 0},
+                 Z[3] = {0, 0, 1}, MX[3] = {-1, 0, 0};
+    a = cone(ctx, O, X, Y, Z);
+    b = cone(ctx, A2, Y, Z, MX);
+    const double vs[3] = {HUGE_VAL, -0.5, 0.7};
+    s.surface = a;
+    s.u = 1.0;
+    e.surface = b;
+    e.u = 1.0;
+    for (int j = 0; j < 3; ++j) s.v[j] = e.v[j] = vs[j];
+  }
+  ~Fig6() {
+    cyc_surface_destroy(ctx, a);
+    cyc_surface_destroy(ctx, b);
+    cyc_context_destroy(ctx);
+  }
+};
+
+}  // namespace
+
+TEST(Optimizer, BlendDefaultsAndSummary) {
+  cyc_blend_objective o;
+  cyc_optimize_options p;
+  cyc_blend_objective_init(&o);
+  cyc_optimize_options_init(&p);
+  cyc_blend_objective_init(nullptr);
+  cyc_optimize_options_init(nullptr);
+  EXPECT_EQ(o.fairness, 1.0);
+  EXPECT_EQ(o.quadrature_t, 8);
+  EXPECT_EQ(o.targets, nullptr);
+  EXPECT_EQ(p.max_iterations, 50);
+  EXPECT_EQ(p.lambda_max_ratio, 4.0);
+
+  Fig6 f;
+  cyc_surface* X = nullptr;
+  cyc_blend_end so, eo;
+  cyc_optimize_summary sum;
+  ASSERT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0, nullptr,
+                               nullptr, &X, &so, &eo, &sum),
+            CYC_OK)
+      << cyc_context_last_error(f.ctx);
+  EXPECT_LE(sum.final_cost, sum.initial_cost);
+  EXPECT_GT(sum.iterations, 0);
+  EXPECT_GE(sum.seconds, 0.0);
+  EXPECT_TRUE(sum.termination == CYC_OPTIMIZE_CONVERGED ||
+              sum.termination == CYC_OPTIMIZE_ITERATION_LIMIT);
+  EXPECT_NEAR(sum.final_cost, sum.fairness + sum.regularity + sum.targets + sum.obstacles,
+              1e-12 * (1 + sum.final_cost));
+  EXPECT_EQ(so.surface, f.a);
+  EXPECT_EQ(eo.surface, f.b);
+  EXPECT_GT(so.lambda, 0.0);
+  EXPECT_LT(eo.lambda, 0.0);
+  // The optimized ends rebuild the same blend through cyc_blend_ringed.
+  cyc_surface* Y = nullptr;
+  ASSERT_EQ(cyc_blend_ringed(f.ctx, &so, &eo, 2, 0.0, 1.0, &Y), CYC_OK);
+  double x[3], y[3];
+  ASSERT_EQ(cyc_surface_eval(f.ctx, X, 0.4, 0.3, x, nullptr, nullptr, nullptr), CYC_OK);
+  ASSERT_EQ(cyc_surface_eval(f.ctx, Y, 0.4, 0.3, y, nullptr, nullptr, nullptr), CYC_OK);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(x[k], y[k]);
+  // The join still holds (continuity report with the new tangent length;
+  // free_orders = min(K, 2) = 2 also moved phi'', so compare order 0 only).
+  cyc_continuity R;
+  ASSERT_EQ(cyc_continuity_report(f.ctx, f.a, 1.0, so.lambda, X, 0.0, 1, nullptr, 16, &R), CYC_OK);
+  EXPECT_LE(R.max_gap, 1e-10 * R.point_scale);
+  EXPECT_LE(R.max_normal_angle, 1e-8);
+  cyc_surface_destroy(f.ctx, X);
+  cyc_surface_destroy(f.ctx, Y);
+}
+
+TEST(Optimizer, BlendErrorsLeaveOutputsUntouched) {
+  Fig6 f;
+  cyc_surface* const kSent = reinterpret_cast<cyc_surface*>(0x1);
+  cyc_surface* X = kSent;
+  cyc_blend_end so, eo;
+  std::memset(&so, 0x5a, sizeof so);
+  const cyc_blend_end so0 = so;
+  cyc_optimize_summary sum;
+  std::memset(&sum, 0x5a, sizeof sum);
+  const cyc_optimize_summary sum0 = sum;
+  auto untouched = [&] {
+    EXPECT_EQ(X, kSent);
+    EXPECT_EQ(std::memcmp(&so, &so0, sizeof so), 0);
+    EXPECT_EQ(std::memcmp(&sum, &sum0, sizeof sum), 0);
+  };
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, 5, &f.s, &f.e, 1, 0, 1, nullptr, nullptr, &X, &so, &eo, &sum),
+            CYC_E_INVALID_ARGUMENT);
+  untouched();
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, nullptr, &f.e, 1, 0, 1, nullptr, nullptr,
+                               &X, &so, &eo, &sum),
+            CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, nullptr, nullptr,
+                               nullptr, &so, &eo, &sum),
+            CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_CANAL, &f.s, &f.e, 1, 0, 1, nullptr, nullptr, &X,
+                               &so, &eo, &sum),
+            CYC_E_INVALID_ARGUMENT);
+  cyc_blend_objective o;
+  cyc_blend_objective_init(&o);
+  o.obstacle_count = 1;  // NULL array
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, &o, nullptr, &X, &so,
+                               &eo, &sum),
+            CYC_E_NULL_ARGUMENT);
+  cyc_blend_objective_init(&o);
+  o.fairness = NAN;
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, &o, nullptr, &X, &so,
+                               &eo, &sum),
+            CYC_E_NOT_FINITE);
+  cyc_optimize_options p;
+  cyc_optimize_options_init(&p);
+  p.lambda_min_ratio = 0;
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, nullptr, &p, &X, &so,
+                               &eo, &sum),
+            CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 1, 0, nullptr, nullptr, &X,
+                               &so, &eo, &sum),
+            CYC_E_BAD_DOMAIN);
+  untouched();
+  EXPECT_NE(std::string(cyc_context_last_error(f.ctx)), "");
 }

@@ -19,7 +19,9 @@ Outcome check_order(const char* fn, int K, int lo) {
   return ok();
 }
 
-BlendEnd end_of(const cyc_blend_end& e) {
+}  // namespace
+
+BlendEnd capi::end_of(const cyc_blend_end& e) {
   BlendEnd b;
   b.surface = &e.surface->surface;
   b.u = e.u;
@@ -28,6 +30,8 @@ BlendEnd end_of(const cyc_blend_end& e) {
   for (int m = 0; m < kMaxBlendOrder - 1; ++m) b.phi[m] = e.phi[m];
   return b;
 }
+
+namespace {
 
 template <class Make>
 Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,

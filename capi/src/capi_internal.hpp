@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "cyclide/cyclide.h"
+#include "cyclide/blend.hpp"
 #include "cyclide/surface.hpp"
 
 using cyclide::RationalCurve;
@@ -216,6 +217,9 @@ inline Strided3 strided(const cyc_buffer3& b) {
   s.stride = b.stride;
   return s;
 }
+
+// A C blend end as the core's (blend_c.cpp; also the optimizer's).
+BlendEnd end_of(const cyc_blend_end& e);
 
 }  // namespace capi
 }  // namespace cyclide

@@ -2,6 +2,7 @@
 // symbol set is the same in every build (SPEC.md "Optimizer tier").
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 #include "capi_internal.hpp"
 
@@ -10,6 +11,7 @@
 #endif
 
 #if CYCLIDE_HAVE_CERES
+#include "optim/blend_optimizer.hpp"
 #include "optim/closest_point.hpp"
 #endif
 
@@ -41,6 +43,141 @@ int cyc_optimize_closest_point(cyc_context* ctx, const cyc_surface* surface,
 #else
     (void)distance;
     (void)closest;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
+  });
+}
+
+void cyc_blend_objective_init(cyc_blend_objective* o) {
+  if (!o) return;
+  std::memset(o, 0, sizeof *o);
+  o->fairness = 1.0;
+  o->regularity = 1.0;
+  o->min_determinant = 1e-2;
+  o->min_speed = 1e-2;
+  o->target_weight = 1.0;
+  o->obstacle_weight = 1.0;
+  o->quadrature_t = 8;
+  o->quadrature_v = 4;
+}
+
+void cyc_optimize_options_init(cyc_optimize_options* p) {
+  if (!p) return;
+  std::memset(p, 0, sizeof *p);
+  p->lambda_min_ratio = 0.25;
+  p->lambda_max_ratio = 4.0;
+  p->higher_bound = 4.0;
+  p->max_iterations = 50;
+  p->function_tolerance = 1e-8;
+  p->gradient_tolerance = 1e-10;
+  p->parameter_tolerance = 1e-8;
+}
+
+int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
+                       const cyc_blend_end* end, int K, double t0, double t1,
+                       const cyc_blend_objective* objective, const cyc_optimize_options* options,
+                       cyc_surface** out, cyc_blend_end* start_out, cyc_blend_end* end_out,
+                       cyc_optimize_summary* summary) {
+  const char* fn = "cyc_optimize_blend";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(start);
+    REQUIRE(end);
+    REQUIRE(start->surface);
+    REQUIRE(end->surface);
+    REQUIRE(out);
+#if CYCLIDE_HAVE_CERES
+    if (kind != CYC_BLEND_CANAL && kind != CYC_BLEND_RINGED)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: kind %d is neither CYC_BLEND_CANAL nor "
+                  "CYC_BLEND_RINGED", fn, kind);
+    cyc_blend_objective o;
+    cyc_optimize_options p;
+    cyc_blend_objective_init(&o);
+    cyc_optimize_options_init(&p);
+    if (objective) o = *objective;
+    if (options) p = *options;
+    if (o.target_count < 0 || o.obstacle_count < 0)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: negative target or obstacle count", fn);
+    if ((o.target_count > 0 && !o.targets) || (o.obstacle_count > 0 && !o.obstacles))
+      return fail(CYC_E_NULL_ARGUMENT, "%s: NULL targets or obstacles with a positive count",
+                  fn);
+    std::vector<optim::TargetPoint> targets(size_t(o.target_count));
+    for (int q = 0; q < o.target_count; ++q) {
+      targets[size_t(q)].point = vec(o.targets[q].point);
+      targets[size_t(q)].t = o.targets[q].t;
+    }
+    std::vector<optim::SphereObstacle> obstacles(size_t(o.obstacle_count));
+    for (int q = 0; q < o.obstacle_count; ++q) {
+      obstacles[size_t(q)].center = vec(o.obstacles[q].center);
+      obstacles[size_t(q)].radius = o.obstacles[q].radius;
+    }
+    optim::BlendObjective O;
+    O.fairness = o.fairness;
+    O.regularity = o.regularity;
+    O.min_determinant = o.min_determinant;
+    O.min_speed = o.min_speed;
+    O.targets = targets.data();
+    O.target_count = o.target_count;
+    O.target_weight = o.target_weight;
+    O.obstacles = obstacles.data();
+    O.obstacle_count = o.obstacle_count;
+    O.clearance = o.clearance;
+    O.obstacle_weight = o.obstacle_weight;
+    O.quadrature_t = o.quadrature_t;
+    O.quadrature_v = o.quadrature_v;
+    optim::BlendOptions P;
+    P.free_orders = p.free_orders;
+    P.lambda_min_ratio = p.lambda_min_ratio;
+    P.lambda_max_ratio = p.lambda_max_ratio;
+    P.higher_bound = p.higher_bound;
+    P.max_iterations = p.max_iterations;
+    P.function_tolerance = p.function_tolerance;
+    P.gradient_tolerance = p.gradient_tolerance;
+    P.parameter_tolerance = p.parameter_tolerance;
+    Surface S;
+    BlendEnd so, eo;
+    optim::BlendSummary R;
+    double bad = t0;
+    const optim::BlendKind k =
+        kind == CYC_BLEND_CANAL ? optim::BlendKind::canal : optim::BlendKind::ringed;
+    const Status st =
+        optim::optimize_blend(k, end_of(*start), end_of(*end), K, t0, t1, O, P, S, &so, &eo, R, &bad);
+    if (st != Status::ok) {
+      if (st == Status::dependent_planes || st == Status::zero_tangent ||
+          st == Status::collinear_points || st == Status::singular_point ||
+          st == Status::degenerate_circle_parameter)
+        return from_core_at(fn, st, bad);
+      return from_core(fn, st);
+    }
+    const Outcome made = emit(fn, ctx, out, S);
+    if (made.status) return made;
+    auto put_end = [](const cyc_blend_end& in, const BlendEnd& b, cyc_blend_end* dst) {
+      cyc_blend_end r = in;
+      r.lambda = b.lambda;
+      for (int m = 0; m < kMaxBlendOrder - 1; ++m) r.phi[m] = b.phi[m];
+      *dst = r;
+    };
+    if (start_out) put_end(*start, so, start_out);
+    if (end_out) put_end(*end, eo, end_out);
+    if (summary) {
+      cyc_optimize_summary m;
+      std::memset(&m, 0, sizeof m);
+      m.initial_cost = R.initial_cost;
+      m.final_cost = R.final_cost;
+      m.iterations = R.iterations;
+      m.seconds = R.seconds;
+      m.termination = int(R.termination);
+      m.fairness = R.fairness;
+      m.regularity = R.regularity;
+      m.targets = R.targets;
+      m.obstacles = R.obstacles;
+      m.length_scale = R.length_scale;
+      m.fairness_scale = R.fairness_scale;
+      *summary = m;
+    }
+    return made;
+#else
+    (void)kind; (void)K; (void)t0; (void)t1; (void)objective; (void)options;
+    (void)start_out; (void)end_out; (void)summary;
     return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
 #endif
   });

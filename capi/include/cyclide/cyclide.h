@@ -602,6 +602,112 @@ CYC_API int cyc_optimize_closest_point(cyc_context* ctx, const cyc_surface* surf
                                        const double point[3], double* u, double* v,
                                        double closest[3], double* distance);
 
+/* ------------------------------------------------------------ blend optimizer */
+
+/* The free parameters of a blend — the jets (lambda = phi', phi'', ...) of
+ * both ends, see cyc_blend_end — chosen by Levenberg-Marquardt (Ceres,
+ * exact derivatives by automatic differentiation through the construction)
+ * against a weighted objective (SPEC.md §8e). */
+#define CYC_BLEND_CANAL 0  /* cyc_blend_canal: K in 2..CYC_MAX_BLEND_ORDER */
+#define CYC_BLEND_RINGED 1 /* cyc_blend_ringed: K in 1..CYC_MAX_BLEND_ORDER */
+#define CYC_MAX_QUADRATURE 16
+
+/** The blend's circle at parameter t should pass through `point`. */
+typedef struct cyc_blend_target {
+  double point[3];
+  double t;
+} cyc_blend_target;
+
+/** A sphere the blend's circles should keep `clearance` away from. */
+typedef struct cyc_blend_obstacle {
+  double center[3];
+  double radius;
+} cyc_blend_obstacle;
+
+/** The objective: a weighted sum of
+ *  - fairness: the integral of |x_tt|^2 + 2 |x_tv|^2 + |x_vv|^2 over the
+ *    blend (Gauss-Legendre, quadrature_t nodes in t and quadrature_v per
+ *    chart of the circle: v in [-1, 1] and 1/v in [-1, 1]), divided by the
+ *    start blend's (so the term starts at fairness / 2);
+ *  - regularity: hinge penalties keeping the PRCS/PRRS planes' relative
+ *    determinant above min_determinant at the t nodes (the paper's weakness:
+ *    parallel normal planes) and |x_t| above min_speed L;
+ *  - targets: the blend's circle at t_k passing through X_k (distance / L);
+ *  - obstacles: every circle at the t nodes at least radius + clearance
+ *    from each obstacle's center (closed-form point-circle distance; hinge).
+ *  L is the size of the two end circles and their distance. Weights are
+ *  >= 0; arrays may be NULL only with count 0. */
+typedef struct cyc_blend_objective {
+  double fairness;        /* default 1 */
+  double regularity;      /* default 1 */
+  double min_determinant; /* in (0, 1), default 1e-2 */
+  double min_speed;       /* > 0, default 1e-2 */
+  const cyc_blend_target* targets;
+  int target_count;
+  double target_weight;   /* default 1 */
+  const cyc_blend_obstacle* obstacles;
+  int obstacle_count;
+  double clearance;       /* >= 0, default 0 */
+  double obstacle_weight; /* default 1 */
+  int quadrature_t;       /* 1..CYC_MAX_QUADRATURE, default 8 */
+  int quadrature_v;       /* 1..CYC_MAX_QUADRATURE, default 4 */
+} cyc_blend_objective;
+
+/** Solver options and the parameters' bounds. free_orders: 1 = only the
+ *  tangent lengths lambda of both ends, m = phi', ..., phi^(m); 0 = min(K,
+ *  2); higher orders keep the given phi. |phi'| stays within
+ *  [lambda_min_ratio, lambda_max_ratio] times the start |lambda| (with its
+ *  sign), |phi^(m)| <= higher_bound |lambda|. */
+typedef struct cyc_optimize_options {
+  int free_orders;           /* 0..K, default 0 */
+  double lambda_min_ratio;   /* in (0, 1], default 0.25 */
+  double lambda_max_ratio;   /* >= 1, default 4 */
+  double higher_bound;       /* >= 0, default 4 */
+  int max_iterations;        /* >= 0 (0: the start blend), default 50 */
+  double function_tolerance; /* Ceres' tolerances, default 1e-8 */
+  double gradient_tolerance; /* default 1e-10 */
+  double parameter_tolerance; /* default 1e-8 */
+} cyc_optimize_options;
+
+#define CYC_OPTIMIZE_CONVERGED 0       /* a tolerance was met */
+#define CYC_OPTIMIZE_ITERATION_LIMIT 1 /* max_iterations reached; the best point */
+#define CYC_OPTIMIZE_REVERTED 2        /* the optimum was no valid blend: the start */
+
+/** What the optimizer did. Costs are 1/2 the sum of squared residuals;
+ *  final_cost <= initial_cost always (the start is the default blend, or
+ *  the first valid of its lambdas scaled by 1/2, 2, 1/4, 4). */
+typedef struct cyc_optimize_summary {
+  double initial_cost;
+  double final_cost;
+  int iterations;
+  double seconds;
+  int termination;  /* CYC_OPTIMIZE_* */
+  double fairness, regularity, targets, obstacles; /* the final cost's terms */
+  double length_scale;   /* L */
+  double fairness_scale; /* the start blend's fairness integral */
+} cyc_optimize_summary;
+
+/** The defaults above (usable without the optimizer tier). NULL is ignored. */
+CYC_API void cyc_blend_objective_init(cyc_blend_objective* objective);
+CYC_API void cyc_optimize_options_init(cyc_optimize_options* options);
+
+/** Optimizes the blend of `kind` (CYC_BLEND_CANAL or CYC_BLEND_RINGED) from
+ *  start to end on [t0, t1]: the ends' lambda and phi[] are the start
+ *  values. Writes the blend to *out (a new handle), and optionally the
+ *  chosen ends (same surfaces and points, the optimized lambda and phi) and
+ *  the summary. objective / options NULL: the defaults. Statuses:
+ *  CYC_E_INVALID_ARGUMENT (a bad weight, quadrature, bound, count or kind),
+ *  CYC_E_NOT_FINITE, CYC_E_NULL_ARGUMENT, CYC_E_DEGREE_TOO_HIGH, and those of
+ *  cyc_blend_canal / cyc_blend_ringed when no start blend is valid.
+ *  Optimizer tier: allocates; CYC_E_UNSUPPORTED without Ceres. Nothing is
+ *  written on error. */
+CYC_API int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
+                               const cyc_blend_end* end, int K, double t0, double t1,
+                               const cyc_blend_objective* objective,
+                               const cyc_optimize_options* options, cyc_surface** out,
+                               cyc_blend_end* start_out, cyc_blend_end* end_out,
+                               cyc_optimize_summary* summary);
+
 #ifdef __cplusplus
 }
 #endif
