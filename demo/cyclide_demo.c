@@ -127,15 +127,16 @@ static void write_surface(cyc_context* ctx, const cyc_surface* s, const char* di
   N.data = nrm;
   check(ctx, cyc_surface_eval_batch(ctx, s, uv, 2, NU * NV, P, none, none, N, &singular),
         "cyc_surface_eval_batch");
-  for (i = 0; i < NU * NV; ++i) {
+  for (i = 0; implicit && i < NU * NV; ++i) {
     const double* p = pts + 3 * i;
     const double m = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     const double r = fabs(implicit(p));
     if (m > scale) scale = m;
     if (r > worst) worst = r;
   }
-  fprintf(report, "  implicit equation residual on %d mesh points: %.2e (scale %.1f)\n",
-          NU * NV, worst, scale * scale * scale);
+  if (implicit)
+    fprintf(report, "  implicit equation residual on %d mesh points: %.2e (scale %.1f)\n",
+            NU * NV, worst, scale * scale * scale);
   fprintf(report, "  points with undefined normal (singular, e.g. P2, P3): %zu\n", singular);
   write_mesh(dir, name, pts, nrm, report);
 }
@@ -368,6 +369,154 @@ static void darboux_demos(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_surface_destroy(ctx, s);
 }
 
+/* ---------------------------------------------------------------- blends */
+
+/* Fig. 6 of seed 000: cone A (apex 0, axis z) and cone B (apex (4,0,4),
+ * axis -x), each the PRRS of three lines through its apex. */
+static double cone_a(const double p[3]) { return p[0] * p[0] + p[1] * p[1] - p[2] * p[2]; }
+static double cone_b(const double p[3]) {
+  return p[1] * p[1] + (p[2] - 4) * (p[2] - 4) - (4 - p[0]) * (4 - p[0]);
+}
+
+static cyc_surface* demo_cone(cyc_context* ctx, const double A[3], const double e1[3],
+                              const double e2[3], const double e3[3]) {
+  cyc_curve* L[3];
+  cyc_surface* S = NULL;
+  int k, j;
+  for (k = 0; k < 3; ++k) {
+    const double t = 2 * PI * k / 3 + 0.3;
+    double d[3];
+    for (j = 0; j < 3; ++j) d[j] = cos(t) * e1[j] + sin(t) * e2[j] + e3[j];
+    check(ctx, cyc_curve_create_line(ctx, A, d, &L[k]), "line");
+  }
+  check(ctx, cyc_prrs_create(ctx, L[0], L[1], L[2], NULL, 0.5, 1.0, &S), "cyc_prrs_create");
+  for (k = 0; k < 3; ++k) cyc_curve_destroy(ctx, L[k]);
+  return S;
+}
+
+/* The join of an input at u with the blend at t (jumps with lambda). */
+static void report_join(cyc_context* ctx, const cyc_surface* in, double u, double lambda,
+                        const cyc_surface* blend, double t, int K, FILE* report) {
+  cyc_continuity R;
+  int l;
+  check(ctx, cyc_continuity_report(ctx, in, u, lambda, blend, t, K, NULL, 32, &R),
+        "cyc_continuity_report");
+  fprintf(report, "    join at t = %g: gap %.1e (of %.2f), tangent planes %.1e rad, circle jumps",
+          t, R.max_gap, R.point_scale, R.max_normal_angle);
+  for (l = 0; l <= K; ++l) fprintf(report, " %.0e", R.circle_jump[l]);
+  fprintf(report, " (orders 0..%d)\n", K);
+}
+
+/* A UV sphere as OBJ (the obstacle). */
+static void write_sphere(const char* dir, const char* name, const double c[3], double r,
+                         FILE* report) {
+  static double pts[NU * NV * 3], nrm[NU * NV * 3];
+  int i, j, k;
+  for (i = 0; i < NU; ++i)
+    for (j = 0; j < NV; ++j) {
+      const double th = PI * i / (NU - 1), ph = 2 * PI * j / NV;
+      const double n[3] = {sin(th) * cos(ph), sin(th) * sin(ph), cos(th)};
+      for (k = 0; k < 3; ++k) {
+        nrm[3 * (i * NV + j) + k] = n[k];
+        pts[3 * (i * NV + j) + k] = c[k] + r * n[k];
+      }
+    }
+  write_mesh(dir, name, pts, nrm, report);
+}
+
+/* The smallest distance of the blend's points from c (a 64 x 48 grid). */
+static double closest_approach(cyc_context* ctx, const cyc_surface* s, const double c[3]) {
+  double best = HUGE_VAL, x[3];
+  int i, j;
+  for (i = 0; i < NU; ++i)
+    for (j = 0; j < NV; ++j) {
+      const double v = tan(PI * (j + 0.5) / NV - PI / 2);
+      double d;
+      if (cyc_surface_eval(ctx, s, (double)i / (NU - 1), v, x, NULL, NULL, NULL) != CYC_OK)
+        continue;
+      d = sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) +
+               (x[2] - c[2]) * (x[2] - c[2]));
+      if (d < best) best = d;
+    }
+  return best;
+}
+
+static void blend_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  const double O[3] = {0, 0, 0}, A2[3] = {4, 0, 4}, X[3] = {1, 0, 0}, Y[3] = {0, 1, 0},
+               Z[3] = {0, 0, 1}, MX[3] = {-1, 0, 0};
+  cyc_surface *a = demo_cone(ctx, O, X, Y, Z), *b = demo_cone(ctx, A2, Y, Z, MX);
+  cyc_surface *ringed = NULL, *canal = NULL;
+  cyc_blend_end s, e;
+  memset(&s, 0, sizeof s);
+  s.surface = a;
+  s.u = 1.0;
+  s.v[0] = HUGE_VAL;
+  s.v[1] = -0.5;
+  s.v[2] = 0.7;
+  e = s;
+  e.surface = b;
+
+  fprintf(report, "\nBlends (seed 000 sec. 9): Fig. 6, cone A (apex 0, axis z) and cone B "
+                  "(apex (4,0,4), axis -x), u in [0.5, 1]\n");
+  write_surface(ctx, a, dir, "blend_cone_a", cone_a, report);
+  write_surface(ctx, b, dir, "blend_cone_b", cone_b, report);
+
+  check(ctx, cyc_blend_ringed(ctx, &s, &e, 1, 0.0, 1.0, &ringed), "cyc_blend_ringed");
+  fprintf(report, "  ringed blend K = 1 (Prop. 7: C^1), three cubic Hermite curves:\n");
+  report_join(ctx, a, 1.0, 1.0, ringed, 0.0, 1, report);
+  report_join(ctx, b, 1.0, -1.0, ringed, 1.0, 1, report);
+  write_surface(ctx, ringed, dir, "blend_ringed_k1", NULL, report);
+
+  check(ctx, cyc_blend_canal(ctx, &s, &e, 2, 0.0, 1.0, &canal), "cyc_blend_canal");
+  fprintf(report, "  canal blend K = 2 (Prop. 6: G^1), two quintic Hermite curves:\n");
+  report_join(ctx, a, 1.0, 1.0, canal, 0.0, 0, report);
+  report_join(ctx, b, 1.0, -1.0, canal, 1.0, 0, report);
+  write_surface(ctx, canal, dir, "blend_canal_k2", NULL, report);
+
+  if (cyc_optimizer_available()) {
+    cyc_surface *plain = NULL, *opt = NULL;
+    cyc_blend_obstacle ob;
+    cyc_blend_objective obj;
+    cyc_optimize_summary sum;
+    cyc_blend_end so, eo;
+    double x[3];
+    check(ctx, cyc_blend_ringed(ctx, &s, &e, 2, 0.0, 1.0, &plain), "cyc_blend_ringed");
+    check(ctx, cyc_surface_eval(ctx, plain, 0.5, 1.0, x, NULL, NULL, NULL), "eval");
+    memcpy(ob.center, x, sizeof x);
+    ob.radius = 0.3;
+    cyc_blend_objective_init(&obj);
+    obj.obstacles = &ob;
+    obj.obstacle_count = 1;
+    obj.obstacle_weight = 100;
+    obj.fairness = 0.01;
+    obj.quadrature_t = 12;
+    obj.quadrature_v = 8;
+    check(ctx, cyc_optimize_blend(ctx, CYC_BLEND_RINGED, &s, &e, 2, 0.0, 1.0, &obj, NULL, &opt,
+                                  &so, &eo, &sum),
+          "cyc_optimize_blend");
+    fprintf(report, "  optimized ringed blend K = 2 around a sphere of radius 0.3 centred on the "
+                    "default blend (Ceres):\n");
+    fprintf(report, "    cost %.3g -> %.3g in %d iterations, %.1f ms; lambda %.3g, %.3g; "
+                    "phi'' %.3g, %.3g\n",
+            sum.initial_cost, sum.final_cost, sum.iterations, 1e3 * sum.seconds, so.lambda,
+            eo.lambda, so.phi[0], eo.phi[0]);
+    fprintf(report, "    closest approach to the sphere's center: %.3f (default) -> %.3f\n",
+            closest_approach(ctx, plain, ob.center), closest_approach(ctx, opt, ob.center));
+    report_join(ctx, a, 1.0, so.lambda, opt, 0.0, 0, report);
+    write_surface(ctx, plain, dir, "blend_ringed_k2_default", NULL, report);
+    write_surface(ctx, opt, dir, "blend_ringed_k2_optimized", NULL, report);
+    write_sphere(dir, "blend_obstacle", ob.center, ob.radius, report);
+    cyc_surface_destroy(ctx, plain);
+    cyc_surface_destroy(ctx, opt);
+  } else {
+    fprintf(report, "  (no optimizer tier in this build: the optimized blend is skipped)\n");
+  }
+  cyc_surface_destroy(ctx, ringed);
+  cyc_surface_destroy(ctx, canal);
+  cyc_surface_destroy(ctx, a);
+  cyc_surface_destroy(ctx, b);
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -384,7 +533,7 @@ int main(int argc, char** argv) {
     perror(path);
     return 1;
   }
-  fprintf(report, "cyclide %s (ABI %d) demo: seed 000 Examples 2, 3, 5 and Darboux cyclides\n\n",
+  fprintf(report, "cyclide %s (ABI %d) demo: seed 000 Examples 2, 3, 5, Darboux cyclides and blends\n\n",
           cyc_version_string(), cyc_abi_version());
 
   /* Example 2 (21)-(23): PRCS of two lines -> a parabolic Darboux cyclide. */
@@ -457,6 +606,7 @@ int main(int argc, char** argv) {
 
   cyc_curve_destroy(ctx, l1);
   darboux_demos(ctx, dir, report);
+  blend_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

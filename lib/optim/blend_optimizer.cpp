@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "cyclide/prcs.hpp"
@@ -146,23 +147,26 @@ bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
   return true;
 }
 
-// x(t, z) near a node as a series in z (chart 0: v = z; chart 1: v = 1/z)
-// whose coefficients are series in t: the rotation formula on nested series.
+// x(t, z) near the node z as a series in z whose coefficients are series
+// in t. The circle is the rational quadratic x = o + (P0 + P1 v + P2 v^2) /
+// (Q0 + Q1 v + Q2 v^2) of circle_quadratic (one per t node and chart:
+// chart 0 is v = z, f = v; chart 1 is v = 1/z, the same circle with
+// (alpha, beta, gamma, delta) = (0, 1, 1, 0)), so per point only the two
+// quadratics are expanded at z and divided as series.
 template <class T>
-void point_series2(const CircleFrame<Taylor<T, 2>>& F, int chart, double z,
+void point_series2(const CircleQuadratic<Taylor<T, 2>>& C, double z,
                    Vec3<Taylor<Taylor<T, 2>, 2>>& x) {
   using U = Taylor<T, 2>;
   using Z = Taylor<U, 2>;
-  const Vec3<U> d = F.p - F.o;
-  const U aa = F.a.dot(F.a), ad = F.a.dot(d);
-  const Vec3<U> axd = F.a.cross(d);
-  const Z var = Z::variable(U(z)), one(U(1.0)), two(U(2.0));
-  const Z W = chart == 0 ? var : one, G = chart == 0 ? one : var;
-  const Z W2 = W * W, G2 = G * G, AA(aa), AD(ad);
-  const Z den = W2 + G2 * AA;
-  for (int j = 0; j < 3; ++j)
-    x[j] = Z(F.o[j]) +
-           ((W2 - G2 * AA) * Z(d[j]) + two * G2 * AD * Z(F.a[j]) + two * W * G * Z(axd[j])) / den;
+  auto expand = [z](const U& a0, const U& a1, const U& a2) {
+    Z r;
+    r.c[0] = a0 + (a1 + a2 * U(z)) * U(z);
+    r.c[1] = a1 + U(2.0 * z) * a2;
+    r.c[2] = a2;
+    return r;
+  };
+  const Z den = expand(C.Q[0], C.Q[1], C.Q[2]);
+  for (int j = 0; j < 3; ++j) x[j] = Z(C.o[j]) + expand(C.P[0][j], C.P[1][j], C.P[2][j]) / den;
 }
 
 // A point X against the circle of the frame (values): its height h over the
@@ -223,10 +227,18 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms) {
       r[k] = w_obs * hinge(T((S.radius + O.clearance - dist) / P.L));
       add(&Terms::obstacles, r[k++]);
     }
+    CircleQuadratic<Taylor<T, 2>> C[2];
+    C[0] = circle_quadratic(F);
+    {
+      CircleFrame<Taylor<T, 2>> G = F;  // v = 1/z: f = 1/z
+      std::swap(G.alpha, G.beta);
+      std::swap(G.gamma, G.delta);
+      C[1] = circle_quadratic(G);
+    }
     for (int chart = 0; chart < 2; ++chart)
       for (int j = 0; j < P.nz; ++j) {
         Vec3<Taylor<Taylor<T, 2>, 2>> x;
-        point_series2(F, chart, P.zn[j], x);
+        point_series2(C[chart], P.zn[j], x);
         const double wq = std::sqrt(O.fairness * P.tw[i] * half * P.zw[j]) * P.fair_norm;
         Vec3<T> xt;
         for (int c = 0; c < 3; ++c) {
