@@ -212,6 +212,97 @@ TEST(RingedBlend, HigherReparameterizationDerivativesKeepGK) {
   }
 }
 
+// make_hermite_spline: every piece takes the knot data, so the pieces
+// agree to order K at the interior knots.
+TEST(Hermite, SplinePiecesJoinCK) {
+  const int K = 2, n = 3;
+  const double u[n] = {0.0, 0.4, 1.0};
+  Vec3d data[n * (K + 1)];
+  for (int i = 0; i < n * (K + 1); ++i) data[i] = Vec3d(0.3 * i, std::sin(i), 1.0 / (1 + i));
+  RationalCurve P[n - 1];
+  ASSERT_EQ(make_hermite_spline(K, n, u, data, P), Status::ok);
+  const auto left = P[0].taylor<K>(0.4), right = P[1].taylor<K>(0.4);
+  double f = 1;
+  for (int j = 0; j <= K; ++j) {
+    if (j > 0) f *= j;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(f * left[c].c[j], data[(K + 1) + j][c], 1e-12) << j;
+      EXPECT_NEAR(f * right[c].c[j], data[(K + 1) + j][c], 1e-12) << j;
+    }
+  }
+  EXPECT_EQ(make_hermite_spline(K, 1, u, data, P), Status::invalid_argument);
+  EXPECT_EQ(make_hermite_spline(K, kMaxSplineKnots + 1, u, data, P), Status::invalid_argument);
+  const double bad[n] = {0.0, 1.0, 0.5};
+  EXPECT_EQ(make_hermite_spline(K, n, bad, data, P), Status::bad_domain);
+}
+
+// A two-piece ringed blend from cone A through the waist circle of a guide
+// cylinder (axis (1, 0, 1) through (1.2, 0, 2.8), radius 1) to cone B: the
+// pieces share the guide's circle at t = 1/2 and join C^K there (circle
+// family and the generator point), each is G^K to the guide and the outer
+// pieces to the cones.
+TEST(RingedBlend, SplineThroughAGuideCircle) {
+  const Surface A = cone1(), B = cone2();
+  const Vec3d axis(1, 0, 1), c0(1.2, 0, 2.8);
+  const Vec3d e1 = Vec3d(1, 0, -1).normalized(), e2(0, 1, 0);
+  RationalCurve L[3];
+  for (int k = 0; k < 3; ++k) {
+    const double a = 2 * kPi * k / 3;
+    ASSERT_EQ(make_line(c0 + std::cos(a) * e1 + std::sin(a) * e2 - 0.5 * axis, axis, L[k]),
+              Status::ok);
+  }
+  Surface G;
+  ASSERT_EQ(make_prrs(L[0], L[1], L[2], nullptr, 0.0, 1.0, G), Status::ok);
+  for (int K = 1; K <= 2; ++K) {
+    BlendEnd ends[3];
+    const Surface* S[3] = {&A, &G, &B};
+    const double us[3] = {1.0, 0.5, 1.0}, vs[3] = {HUGE_VAL, -0.5, 0.7};
+    for (int i = 0; i < 3; ++i) {
+      ends[i].surface = S[i];
+      ends[i].u = us[i];
+      for (int j = 0; j < 3; ++j) ends[i].v[j] = vs[j];
+    }
+    ends[1].lambda = 2.0;  // along the guide's u, from A towards B
+    const double knots[3] = {0.0, 0.5, 1.0};
+    Surface piece[2];
+    Surface* const pieces[2] = {&piece[0], &piece[1]};
+    int bad_piece = -1;
+    ASSERT_EQ(make_ringed_blend_spline(ends, 3, K, knots, pieces, &bad_piece), Status::ok);
+    // The pieces join each other C^K at t = 1/2.
+    ContinuityReport R;
+    ASSERT_EQ(continuity_report(piece[0], 0.5, 1.0, piece[1], 0.5, K, nullptr, 32, R),
+              Status::ok);
+    EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+    EXPECT_LE(R.max_normal_angle, 1e-9);
+    for (int l = 0; l <= K; ++l) EXPECT_LE(R.circle_jump[l], 1e-9) << K << " " << l;
+    const double vg = HUGE_VAL;
+    ASSERT_EQ(continuity_report(piece[0], 0.5, 1.0, piece[1], 0.5, K, &vg, 1, R), Status::ok);
+    for (int l = 0; l <= K; ++l)
+      EXPECT_LE(R.point_jump[l], 1e-9 * std::max(R.point_scale_l[l], R.point_scale)) << l;
+    // Each piece meets the guide G^K (its jet) and the cones.
+    double jet[kMaxBlendOrder] = {2.0};
+    for (int p = 0; p < 2; ++p) {
+      ASSERT_EQ(continuity_report(G, 0.5, jet, piece[p], 0.5, K, nullptr, 32, R), Status::ok);
+      EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+      for (int l = 0; l <= K; ++l) EXPECT_LE(R.circle_jump[l], 1e-9) << p << " " << l;
+    }
+    ASSERT_EQ(continuity_report(A, 1.0, 1.0, piece[0], 0.0, K, nullptr, 32, R), Status::ok);
+    for (int l = 0; l <= K; ++l) EXPECT_LE(R.circle_jump[l], 1e-9);
+    ASSERT_EQ(continuity_report(B, 1.0, -1.0, piece[1], 1.0, K, nullptr, 32, R), Status::ok);
+    for (int l = 0; l <= K; ++l) EXPECT_LE(R.circle_jump[l], 1e-9);
+    // An interior end needs its direction.
+    ends[1].lambda = 0.0;
+    EXPECT_EQ(make_ringed_blend_spline(ends, 3, K, knots, pieces), Status::invalid_argument);
+    EXPECT_EQ(make_ringed_blend_spline(ends, 1, K, knots, pieces), Status::invalid_argument);
+    // A failing piece is named (the second: its knots are reversed).
+    ends[1].lambda = 2.0;
+    const double bad_knots[3] = {0.0, 0.5, 0.25};
+    EXPECT_EQ(make_ringed_blend_spline(ends, 3, K, bad_knots, pieces, &bad_piece),
+              Status::bad_domain);
+    EXPECT_EQ(bad_piece, 1);
+  }
+}
+
 TEST(CanalBlend, K2IsG1) {
   const Surface A = cone1(), B = cone2();
   for (int K = 2; K <= 3; ++K) {

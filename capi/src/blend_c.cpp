@@ -56,9 +56,74 @@ Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
   return emit(fn, ctx, out, S);
 }
 
+// n-1 handles, built all or nothing by the core's spline blend.
+template <class Make>
+Outcome blend_spline(const char* fn, cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
+                     int lo, const double* knots, cyc_surface** pieces, Make&& make) {
+  REQUIRE(ends);
+  REQUIRE(knots);
+  REQUIRE(pieces);
+  if (n < 2 || n > kMaxSplineKnots)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is outside 2..%d", fn, n, kMaxSplineKnots);
+  for (int i = 0; i < n; ++i)
+    if (!ends[i].surface) return fail(CYC_E_NULL_ARGUMENT, "%s: ends[%d].surface is NULL", fn, i);
+  if (Outcome o = check_order(fn, K, lo); o.status) return o;
+  BlendEnd be[kMaxSplineKnots];
+  for (int i = 0; i < n; ++i) be[i] = end_of(ends[i]);
+  cyc_surface* h[kMaxSplineKnots - 1] = {};
+  Surface* s[kMaxSplineKnots - 1] = {};
+  auto release_all = [&] {
+    for (int i = 0; i + 1 < n; ++i) cyc_surface_destroy(ctx, h[i]);
+  };
+  for (int i = 0; i + 1 < n; ++i) {
+    if (emit(fn, ctx, &h[i], Surface()).status) {
+      release_all();
+      return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+    }
+    s[i] = &h[i]->surface;
+  }
+  int bad_piece = 0;
+  double bad_u = knots[0];
+  const Status st = make(be, n, K, knots, s, &bad_piece, &bad_u);
+  if (st != Status::ok) {
+    release_all();
+    if (st == Status::dependent_planes || st == Status::zero_tangent ||
+        st == Status::collinear_points || st == Status::numerical_overflow ||
+        st == Status::singular_point || st == Status::degenerate_circle_parameter)
+      return fail(int(st), "%s: piece %d: %s (at u = %.17g)", fn, bad_piece, explain(st), bad_u);
+    return from_core(fn, st);
+  }
+  for (int i = 0; i + 1 < n; ++i) pieces[i] = h[i];
+  return ok();
+}
+
 }  // namespace
 
 extern "C" {
+
+int cyc_blend_canal_spline(cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
+                           const double* knots, cyc_surface** pieces) {
+  const char* fn = "cyc_blend_canal_spline";
+  return run(ctx, fn, [&] {
+    return blend_spline(fn, ctx, ends, n, K, 2, knots, pieces,
+                        [](const BlendEnd* e, int m, int k, const double* t, Surface* const* p,
+                           int* bp, double* bu) {
+                          return make_canal_blend_spline(e, m, k, t, p, bp, bu);
+                        });
+  });
+}
+
+int cyc_blend_ringed_spline(cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
+                            const double* knots, cyc_surface** pieces) {
+  const char* fn = "cyc_blend_ringed_spline";
+  return run(ctx, fn, [&] {
+    return blend_spline(fn, ctx, ends, n, K, 1, knots, pieces,
+                        [](const BlendEnd* e, int m, int k, const double* t, Surface* const* p,
+                           int* bp, double* bu) {
+                          return make_ringed_blend_spline(e, m, k, t, p, bp, bu);
+                        });
+  });
+}
 
 int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surface, double u,
                               double v, int K, double* out) {

@@ -95,6 +95,26 @@ Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, doub
                          double t1, Surface& out, double* bad_u = nullptr,
                          RationalCurve* curves = nullptr);
 
+// Piecewise blends (issue 4 item 2: spline curves where one piece is not
+// enough): ends[0], ..., ends[n-1] (2 <= n <= kMaxSplineKnots) are circles
+// the blend passes through in this order, the interior ones on guide
+// surfaces; piece i runs on [knots[i], knots[i+1]] from ends[i] to
+// ends[i+1]. The curves are C^K Hermite splines (make_hermite_spline: both
+// pieces at an interior knot take that end's data with its jet), so
+// consecutive pieces share their circle and join C^K in the circle family
+// (ringed; canal: G^(K-1)), and each piece is G^K to the guide surface.
+// Interior ends need an explicit lambda (!= 0: the direction along the
+// guide); the first and last follow blend_lambda. *pieces[0 .. n-2] (each
+// pointer non-null; e.g. the surfaces of C handles) are written only on
+// success; on failure *bad_piece (may be null) names the piece and *bad_u
+// its parameter.
+Status make_canal_blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
+                               Surface* const* pieces, int* bad_piece = nullptr,
+                               double* bad_u = nullptr);
+Status make_ringed_blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
+                                Surface* const* pieces, int* bad_piece = nullptr,
+                                double* bad_u = nullptr);
+
 // The join of surface A at u = uA and surface B at u = uB along a common
 // circle, at sample points x_A(uA, vA[i]); the corresponding point of B is
 // the closest point of B's circle (vB = B.parameter_of). lambda is the

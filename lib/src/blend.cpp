@@ -192,6 +192,57 @@ Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, doub
   return Status::ok;
 }
 
+namespace {
+
+template <class Make>
+Status blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
+                    Surface* const* pieces, int* bad_piece, double* bad_u, Make&& make) {
+  if (!ends || !knots || !pieces) return Status::null_argument;
+  if (n < 2 || n > kMaxSplineKnots) return Status::invalid_argument;
+  for (int i = 0; i + 1 < n; ++i)
+    if (!pieces[i]) return Status::null_argument;
+  for (int i = 1; i + 1 < n; ++i)
+    if (ends[i].lambda == 0.0) return Status::invalid_argument;  // no default inside
+  // Interior ends act as the end of piece i-1 and the start of piece i; the
+  // data are the same, so the curves are C^K splines (make_hermite_spline).
+  // Two passes keep the output all-or-nothing without n surfaces (6 KB
+  // each) on the stack: the first validates every piece in one scratch
+  // surface, the second (deterministic, so it succeeds) writes them.
+  Surface scratch;
+  for (int i = 0; i + 1 < n; ++i) {
+    if (Status st = make(ends[i], ends[i + 1], K, knots[i], knots[i + 1], scratch, bad_u);
+        st != Status::ok) {
+      if (bad_piece) *bad_piece = i;
+      return st;
+    }
+  }
+  for (int i = 0; i + 1 < n; ++i)
+    if (Status st = make(ends[i], ends[i + 1], K, knots[i], knots[i + 1], *pieces[i], nullptr);
+        st != Status::ok)
+      return Status::internal_error;  // unreachable: the first pass built the same piece
+  return Status::ok;
+}
+
+}  // namespace
+
+Status make_canal_blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
+                               Surface* const* pieces, int* bad_piece, double* bad_u) {
+  return blend_spline(ends, n, K, knots, pieces, bad_piece, bad_u,
+                      [](const BlendEnd& a, const BlendEnd& b, int k, double t0, double t1,
+                         Surface& S, double* bad) {
+                        return make_canal_blend(a, b, k, t0, t1, S, bad);
+                      });
+}
+
+Status make_ringed_blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
+                                Surface* const* pieces, int* bad_piece, double* bad_u) {
+  return blend_spline(ends, n, K, knots, pieces, bad_piece, bad_u,
+                      [](const BlendEnd& a, const BlendEnd& b, int k, double t0, double t1,
+                         Surface& S, double* bad) {
+                        return make_ringed_blend(a, b, k, t0, t1, S, bad);
+                      });
+}
+
 Status continuity_report(const Surface& A, double uA, double lambda, const Surface& B,
                          double uB, int K, const double* vA, int n, ContinuityReport& out) {
   if (!input_ok(lambda)) return Status::not_finite;

@@ -556,6 +556,23 @@ CYC_API int cyc_blend_ringed(cyc_context* ctx, const cyc_blend_end* start,
                              const cyc_blend_end* end, int K, double t0, double t1,
                              cyc_surface** out);
 
+/** Piecewise blends (spline Hermite curves where one piece is not enough):
+ *  the blend passes through the circles ends[0], ..., ends[n-1] in order
+ *  (2 <= n <= CYC_MAX_SPLINE_KNOTS; the interior ones on guide surfaces,
+ *  each with lambda != 0: the direction along its guide); piece i runs on
+ *  [knots[i], knots[i+1]] from ends[i] to ends[i+1]. Both pieces at an
+ *  interior circle take its data with its jet, so consecutive pieces share
+ *  that circle and join C^K (ringed) / G^(K-1) (canal), and each piece is
+ *  G^K to its guide. Writes n-1 new handles to pieces[0..n-2] (all or
+ *  nothing); on a degenerate piece the message names the piece and its
+ *  parameter. Statuses of cyc_blend_canal / cyc_blend_ringed,
+ *  CYC_E_INVALID_ARGUMENT for n out of range or an interior lambda of 0. */
+#define CYC_MAX_SPLINE_KNOTS 16
+CYC_API int cyc_blend_canal_spline(cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
+                                   const double* knots, cyc_surface** pieces);
+CYC_API int cyc_blend_ringed_spline(cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
+                                    const double* knots, cyc_surface** pieces);
+
 /** Continuity of the join of surface a at u = ua and surface b at u = ub
  *  along a common circle, at the points x_a(ua, va[i]) and their closest
  *  points on b's circle. lambda = du_a/du_b. All jumps compare b's
