@@ -46,13 +46,7 @@ Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
   Surface S;
   double bad_u = t0;
   const Status s = make(end_of(*start), end_of(*end), K, t0, t1, S, &bad_u);
-  if (s != Status::ok) {
-    if (s == Status::dependent_planes || s == Status::zero_tangent ||
-        s == Status::collinear_points || s == Status::numerical_overflow ||
-        s == Status::singular_point || s == Status::degenerate_circle_parameter)
-      return from_core_at(fn, s, bad_u);
-    return from_core(fn, s);
-  }
+  if (s != Status::ok) return located(s) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
   return emit(fn, ctx, out, S);
 }
 
@@ -87,9 +81,7 @@ Outcome blend_spline(const char* fn, cyc_context* ctx, const cyc_blend_end* ends
   const Status st = make(be, n, K, knots, s, &bad_piece, &bad_u);
   if (st != Status::ok) {
     release_all();
-    if (st == Status::dependent_planes || st == Status::zero_tangent ||
-        st == Status::collinear_points || st == Status::numerical_overflow ||
-        st == Status::singular_point || st == Status::degenerate_circle_parameter)
+    if (located(st))
       return fail(int(st), "%s: piece %d: %s (at u = %.17g)", fn, bad_piece, explain(st), bad_u);
     return from_core(fn, st);
   }

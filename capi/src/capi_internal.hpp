@@ -152,6 +152,14 @@ inline Outcome from_core_at(const char* fn, Status s, double u) {
   return fail(int(s), "%s: %s (at u = %.17g)", fn, explain(s), u);
 }
 
+// Statuses by which a construction locates a degeneracy at a parameter
+// (the message then names it: from_core_at).
+inline bool located(Status s) {
+  return s == Status::dependent_planes || s == Status::zero_tangent ||
+         s == Status::collinear_points || s == Status::numerical_overflow ||
+         s == Status::singular_point || s == Status::degenerate_circle_parameter;
+}
+
 // The one guard every entry point runs through.
 template <class Body>
 int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {

@@ -141,13 +141,7 @@ int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
         kind == CYC_BLEND_CANAL ? optim::BlendKind::canal : optim::BlendKind::ringed;
     const Status st =
         optim::optimize_blend(k, end_of(*start), end_of(*end), K, t0, t1, O, P, S, &so, &eo, R, &bad);
-    if (st != Status::ok) {
-      if (st == Status::dependent_planes || st == Status::zero_tangent ||
-          st == Status::collinear_points || st == Status::singular_point ||
-          st == Status::degenerate_circle_parameter)
-        return from_core_at(fn, st, bad);
-      return from_core(fn, st);
-    }
+    if (st != Status::ok) return located(st) ? from_core_at(fn, st, bad) : from_core(fn, st);
     const Outcome made = emit(fn, ctx, out, S);
     if (made.status) return made;
     auto put_end = [](const cyc_blend_end& in, const BlendEnd& b, cyc_blend_end* dst) {
