@@ -7,6 +7,7 @@
 //  * Darboux cyclides (SPEC §8b): DCMC on Example 4 (core and C API),
 //    cyc_invert_darboux, value + gradient (C API and core), and
 //    cyc_surface_eval_inverted per point (compare with BM_Eval)
+//  * blends (SPEC §8d) and the blend optimizer (§8e, cyc_optimize_blend)
 //
 // Every benchmark reports "allocs_per_iter": heap allocations (malloc family
 // and operator new, counted by alloc_hook.cpp) per iteration of its timed
@@ -776,8 +777,8 @@ void BM_BlendRingedCapi(benchmark::State& state) {
   const int K = int(state.range(0));
   cyc_surface* A = capi_cone(f.ctx, 0);
   cyc_surface* B = capi_cone(f.ctx, 1);
-  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
-  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
+  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
+  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
   int bad = (A && B) ? CYC_OK : CYC_E_INVALID_ARGUMENT;
   AllocCounter allocs(state);
   for (auto _ : state) {
@@ -831,8 +832,8 @@ void BM_ContinuityReport(benchmark::State& state) {
   const Fixture& f = fixture();
   cyc_surface* A = capi_cone(f.ctx, 0);
   cyc_surface* B = capi_cone(f.ctx, 1);
-  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
-  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0};
+  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
+  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
   cyc_surface* X = nullptr;
   int bad = cyc_blend_ringed(f.ctx, &s, &e, 2, 0.0, 1.0, &X);
   cyc_continuity R;
@@ -855,10 +856,58 @@ void BM_ContinuityReport(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 16);
 }
 
+// ------------------------------------------------------------ blend optimizer (SPEC §8e)
+
+// cyc_optimize_blend on the cones' blend (K = state.range(0)) with the
+// default objective and options (8 x 4 quadrature, up to 50
+// Levenberg-Marquardt iterations), then cyc_surface_destroy. Every solve is
+// the same (deterministic), so the last summary gives the counters:
+// "iterations" (Ceres') and "cost_reduction" (initial / final cost).
+void BM_OptimizeBlend(benchmark::State& state, int kind) {
+  if (!cyc_optimizer_available()) {
+    state.SkipWithError("no optimizer tier in this build (Ceres not found)");
+    return;
+  }
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  const int K = int(state.range(0));
+  cyc_surface* A = capi_cone(f.ctx, 0);
+  cyc_surface* B = capi_cone(f.ctx, 1);
+  cyc_blend_end s{A, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
+  cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
+  if (kind == CYC_BLEND_CANAL) s.v[1] = e.v[1] = 0.3;  // as BM_BlendCanal
+  cyc_optimize_summary sum{};
+  int bad = (A && B) ? CYC_OK : CYC_E_INVALID_ARGUMENT;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    cyc_surface* X = nullptr;
+    const int st = cyc_optimize_blend(f.ctx, kind, &s, &e, K, 0.0, 1.0, nullptr, nullptr, &X,
+                                      nullptr, nullptr, &sum);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(X);
+    cyc_surface_destroy(f.ctx, X);
+  }
+  allocs.finish();
+  cyc_surface_destroy(f.ctx, A);
+  cyc_surface_destroy(f.ctx, B);
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_optimize_blend", bad, f.ctx).c_str());
+    return;
+  }
+  state.counters["iterations"] = sum.iterations;
+  state.counters["cost_reduction"] = sum.final_cost > 0 ? sum.initial_cost / sum.final_cost : 0;
+  state.SetItemsProcessed(state.iterations());
+}
+
 BENCHMARK(BM_BlendRinged)->Arg(1)->Arg(2)->Arg(3);
 BENCHMARK(BM_BlendCanal)->Arg(2)->Arg(3);
 BENCHMARK(BM_BlendRingedCapi)->Arg(2);
 BENCHMARK(BM_DerivativesU)->Arg(1)->Arg(2)->Arg(3);
 BENCHMARK(BM_ContinuityReport);
+BENCHMARK_CAPTURE(BM_OptimizeBlend, ringed, CYC_BLEND_RINGED)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OptimizeBlend, canal, CYC_BLEND_CANAL)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -23,7 +23,24 @@
 //    ill-conditioned (derivatives 1e6 times the geometry: not judged) or a
 //    canal blend meets a non-canal input (its circle is another one);
 //  - continuity reports: K and samples echo the input, 0 <= singular <= n,
-//    the angle is in [0, pi/2], all measures are >= 0.
+//    the angle is in [0, pi/2], all measures are >= 0;
+//  - cyc_optimize_blend (op_optimize, rare: each call is a Ceres solve, at
+//    most 4 iterations on quadratures mostly 1..4, and an input's solves
+//    are capped by kSolveBudget): fuzzed kind, ends, K, interval,
+//    objective (weights, bounds, 0..2 targets and obstacles, NULL arrays,
+//    negative counts, quadrature sizes) and options, NULL objective /
+//    options / outputs. NULL pointers give NULL_ARGUMENT, otherwise the
+//    status is one of the validation errors present; without any it is OK
+//    or a blend status: the plain blend's own failure, OK where the plain
+//    blend is OK and the objective moderate, NUMERICAL_OVERFLOW at most
+//    where the start is valid (a reference call with a default objective
+//    on the same nodes). On error nothing is written; on OK the summary
+//    holds (final <= initial cost = the sum of its terms, termination,
+//    iterations <= max_iterations, weight / 2 fairness at the start), the
+//    ends keep surface, u, v and the fixed orders, lambda stays nonzero in
+//    its bounds with the start's sign, the ends rebuild the same surface
+//    through cyc_blend_*, well-scaled joins keep a small gap, and a second
+//    call gives identical results.
 //
 // Input layout: see make_seeds.py (BlendEncoder), which mirrors this file.
 #include <algorithm>
@@ -44,11 +61,16 @@ struct Surf {
   bool canal = false;  // a canal surface (PRCS, or the cones of revolution)
 };
 
+// Work units of Ceres solves an input may spend (see solve_work): about
+// 0.5 s under ASan: the smoke run stays fast, no input nears the timeout.
+constexpr int kSolveBudget = 60;
+
 struct Ctx {
   cyc_context* ctx = nullptr;
   fz::HandlerLog log;
   fz::HandlerLog* logp = nullptr;
   Surf s[2];
+  int solve_budget = kSolveBudget;
   void check(const char* fn, int s) { fz::check_call(fn, ctx, s, logp); }
 };
 
@@ -297,6 +319,24 @@ double jet_bound(const cyc_blend_end& e, double lam) {
   return 2 * m;
 }
 
+// The blend interval: [0, 1], moderate (maybe reversed), empty, or wild.
+void param_t(Input& in, double& t0, double& t1, bool& ws) {
+  switch (in.range(0, 3)) {
+    case 0: t0 = 0; t1 = 1; break;
+    case 1:
+      t0 = in.moderate();
+      t1 = in.moderate();
+      if (!(t1 - t0 >= 1.0 / 16)) ws = false;
+      break;
+    case 2: t0 = t1 = in.moderate(); break;
+    default:
+      t0 = in.wild();
+      t1 = in.wild();
+      ws = false;
+      break;
+  }
+}
+
 void op_blend(Input& in, Ctx& c, bool canal) {
   const char* fn = canal ? "cyc_blend_canal" : "cyc_blend_ringed";
   bool ws = true;
@@ -311,20 +351,7 @@ void op_blend(Input& in, Ctx& c, bool canal) {
   }
   const int K = param_K(in);
   double t0 = 0, t1 = 1;
-  switch (in.range(0, 3)) {
-    case 0: break;
-    case 1:
-      t0 = in.moderate();
-      t1 = in.moderate();
-      if (!(t1 - t0 >= 1.0 / 16)) ws = false;
-      break;
-    case 2: t0 = t1 = in.moderate(); break;
-    default:
-      t0 = in.wild();
-      t1 = in.wild();
-      ws = false;
-      break;
-  }
+  param_t(in, t0, t1, ws);
   const int nulls = in.rarely() ? in.range(1, 3) : 0;  // 1 start, 2 end, 3 out
   cyc_surface* const kSentinelOut = reinterpret_cast<cyc_surface*>(uintptr_t(0x5eed));
   cyc_surface* out = kSentinelOut;
@@ -526,6 +553,524 @@ void op_continuity(Input& in, Ctx& c) {
   }
 }
 
+// ------------------------------------------------------------ optimizer
+
+// A fuzzed call of cyc_optimize_blend: its arguments and what the harness
+// knows about them. Not copied: obj points into the target/obstacle arrays.
+struct OptCall {
+  int kind = CYC_BLEND_RINGED;
+  cyc_blend_end ends[2] = {};
+  const Surf* es[2] = {nullptr, nullptr};
+  int K = 1;
+  double t0 = 0, t1 = 1;
+  cyc_blend_objective obj;
+  cyc_optimize_options opt;
+  bool null_obj = false, null_opt = false;
+  std::vector<cyc_blend_target> targets;  // exactly sized: ASan sees reads past count
+  std::vector<cyc_blend_obstacle> obstacles;
+  int nulls = 0;          // 1 start, 2 end, 3 out, 4 start_out, 5 end_out, 6 summary
+  bool ws = true;         // ends and interval well-scaled (as op_blend)
+  bool moderate = true;   // objective and options free of huge or wild numbers
+};
+
+// The outputs of one call, sentinel-filled before it.
+struct OptOut {
+  static cyc_surface* sentinel_surface() {
+    return reinterpret_cast<cyc_surface*>(uintptr_t(0x5eed));
+  }
+  cyc_surface* S = sentinel_surface();
+  cyc_blend_end ends[2];
+  cyc_optimize_summary sum;
+  OptOut() {
+    std::memset(ends, 0xA5, sizeof ends);
+    std::memset(&sum, 0xA5, sizeof sum);
+  }
+  bool untouched() const {
+    OptOut blank;
+    return S == blank.S && std::memcmp(ends, blank.ends, sizeof ends) == 0 &&
+           std::memcmp(&sum, &blank.sum, sizeof sum) == 0;
+  }
+};
+
+int param_kind(Input& in) {
+  if (in.rarely()) {
+    static constexpr int kBad[] = {-1, 2, 3, INT32_MIN, INT32_MAX};
+    return kBad[in.range(0, 4)];
+  }
+  return in.flag() ? CYC_BLEND_RINGED : CYC_BLEND_CANAL;
+}
+
+// A number of the objective or the options: mostly its default, else a
+// sixteenth in [0, 4], a small integer, 0, negative, huge (valid for
+// weights and upper bounds) or wild (NaN, Inf, raw bits).
+void param_real(Input& in, double& x, bool& moderate) {
+  if (!in.rarely()) return;
+  switch (in.range(0, 5)) {
+    case 0: x = in.range(0, 64) / 16.0; break;
+    case 1: x = in.range(0, 8); break;
+    case 2: x = 0.0; break;
+    case 3: x = -in.range(1, 64) / 16.0; break;
+    case 4: x = 1e300; moderate = false; break;
+    default: x = in.wild(); moderate = false; break;
+  }
+}
+
+// Quadrature sizes: mostly 1..4 (each evaluation of the objective, and so
+// each Ceres iteration, stays cheap), rarely the largest or out of range.
+int param_quadrature(Input& in) {
+  if (in.rarely()) {
+    static constexpr int kEdge[] = {0, -1, CYC_MAX_QUADRATURE + 1, INT32_MIN, CYC_MAX_QUADRATURE};
+    return kEdge[in.range(0, 4)];
+  }
+  return in.range(1, 4);
+}
+
+// An array count: 0..2, or rarely negative or positive with a NULL array.
+int param_count(Input& in, bool& null_array) {
+  null_array = false;
+  if (!in.rarely()) return in.range(0, 2);
+  if (in.flag()) return in.flag() ? -1 : INT32_MIN;
+  null_array = true;
+  return in.range(1, 2);
+}
+
+void fuzz_targets(Input& in, OptCall& o) {
+  bool null_array;
+  const int n = param_count(in, null_array);
+  o.targets.assign(size_t(null_array ? 0 : std::max(n, 0)), cyc_blend_target{});
+  for (cyc_blend_target& T : o.targets) {
+    for (double& x : T.point) x = coord(in, o.moderate);
+    switch (in.range(0, 2)) {
+      case 0: T.t = o.t0 + (o.t1 - o.t0) * in.range(0, 16) / 16.0; break;
+      case 1: T.t = in.moderate(); break;
+      default: T.t = in.wild(); break;
+    }
+    if (!(std::abs(T.t) <= 1e3)) o.moderate = false;
+  }
+  o.obj.targets = null_array ? nullptr : o.targets.data();
+  o.obj.target_count = n;
+}
+
+void fuzz_obstacles(Input& in, OptCall& o) {
+  bool null_array;
+  const int n = param_count(in, null_array);
+  o.obstacles.assign(size_t(null_array ? 0 : std::max(n, 0)), cyc_blend_obstacle{});
+  for (cyc_blend_obstacle& B : o.obstacles) {
+    for (double& x : B.center) x = coord(in, o.moderate);
+    switch (in.range(0, 3)) {
+      case 0: B.radius = in.range(0, 64) / 16.0; break;
+      case 1: B.radius = 0.0; break;
+      case 2: B.radius = -in.range(1, 16) / 16.0; break;
+      default: B.radius = in.wild(); o.moderate = false; break;
+    }
+  }
+  o.obj.obstacles = null_array ? nullptr : o.obstacles.data();
+  o.obj.obstacle_count = n;
+}
+
+void fuzz_objective(Input& in, OptCall& o) {
+  cyc_blend_objective_init(&o.obj);
+  o.null_obj = in.rarely();  // the defaults (quadrature 8 x 4)
+  if (o.null_obj) return;
+  for (double* x : {&o.obj.fairness, &o.obj.regularity, &o.obj.min_determinant,
+                    &o.obj.min_speed, &o.obj.target_weight, &o.obj.clearance,
+                    &o.obj.obstacle_weight})
+    param_real(in, *x, o.moderate);
+  fuzz_targets(in, o);
+  fuzz_obstacles(in, o);
+  o.obj.quadrature_t = param_quadrature(in);
+  o.obj.quadrature_v = param_quadrature(in);
+}
+
+// free_orders: 0..K, rarely out of range.
+int param_free_orders(Input& in, int K) {
+  if (in.rarely()) {
+    const int kBad[] = {-1, INT32_MIN, CYC_MAX_BLEND_ORDER + 1, std::min(K, 100) + 1};
+    return kBad[in.range(0, 3)];
+  }
+  return in.range(0, std::max(0, std::min(K, CYC_MAX_BLEND_ORDER)));
+}
+
+void fuzz_options(Input& in, OptCall& o) {
+  cyc_optimize_options_init(&o.opt);
+  o.null_opt = in.rarely();  // the defaults (50 iterations: rare, slow)
+  if (o.null_opt) return;
+  for (double* x : {&o.opt.lambda_min_ratio, &o.opt.lambda_max_ratio, &o.opt.higher_bound,
+                    &o.opt.function_tolerance, &o.opt.gradient_tolerance,
+                    &o.opt.parameter_tolerance})
+    param_real(in, *x, o.moderate);
+  o.opt.free_orders = param_free_orders(in, o.K);
+  o.opt.max_iterations = in.rarely() ? (in.flag() ? -1 : INT32_MIN) : in.range(0, 4);
+}
+
+void fuzz_call(Input& in, Ctx& c, OptCall& o) {
+  o.kind = param_kind(in);
+  blend_end(in, c, o.ends[0], o.es[0], o.ws);
+  if (in.rarely()) {  // identical ends
+    o.ends[1] = o.ends[0];
+    o.es[1] = o.es[0];
+  } else {
+    blend_end(in, c, o.ends[1], o.es[1], o.ws);
+  }
+  o.K = param_K(in);
+  param_t(in, o.t0, o.t1, o.ws);
+  fuzz_objective(in, o);
+  fuzz_options(in, o);
+  o.nulls = in.rarely() ? in.range(1, 6) : 0;
+}
+
+int call_optimize(Ctx& c, const OptCall& o, OptOut& r, bool all_outputs) {
+  const int nulls = all_outputs ? 0 : o.nulls;
+  return cyc_optimize_blend(c.ctx, o.kind, nulls == 1 ? nullptr : &o.ends[0],
+                            nulls == 2 ? nullptr : &o.ends[1], o.K, o.t0, o.t1,
+                            o.null_obj ? nullptr : &o.obj, o.null_opt ? nullptr : &o.opt,
+                            nulls == 3 ? nullptr : &r.S, nulls == 4 ? nullptr : &r.ends[0],
+                            nulls == 5 ? nullptr : &r.ends[1], nulls == 6 ? nullptr : &r.sum);
+}
+
+// ---- the statuses a call may give
+
+constexpr unsigned bit(int status) { return 1u << status; }  // validation statuses 1..5
+
+// A number of the objective / options: NaN or Inf is NOT_FINITE, < 0 invalid.
+unsigned number_status(double x) {
+  if (!std::isfinite(x)) return bit(CYC_E_NOT_FINITE);
+  return x < 0 ? bit(CYC_E_INVALID_ARGUMENT) : 0;
+}
+
+bool input_ok(double x) { return std::abs(x) <= 1e100; }
+
+unsigned objective_statuses(const cyc_blend_objective& b) {
+  unsigned m = 0;
+  for (double x : {b.fairness, b.regularity, b.min_determinant, b.min_speed, b.target_weight,
+                   b.clearance, b.obstacle_weight})
+    m |= number_status(x);
+  if (!(b.min_determinant > 0 && b.min_determinant < 1) || !(b.min_speed > 0))
+    m |= bit(CYC_E_INVALID_ARGUMENT);
+  for (int q : {b.quadrature_t, b.quadrature_v})
+    if (q < 1 || q > CYC_MAX_QUADRATURE) m |= bit(CYC_E_INVALID_ARGUMENT);
+  if (b.target_count < 0 || b.obstacle_count < 0) m |= bit(CYC_E_INVALID_ARGUMENT);
+  if ((b.target_count > 0 && !b.targets) || (b.obstacle_count > 0 && !b.obstacles))
+    m |= bit(CYC_E_NULL_ARGUMENT);
+  for (int q = 0; b.targets && q < b.target_count; ++q) {
+    const cyc_blend_target& T = b.targets[q];
+    if (!input_ok(T.point[0]) || !input_ok(T.point[1]) || !input_ok(T.point[2]) || !input_ok(T.t))
+      m |= bit(CYC_E_NOT_FINITE);
+  }
+  for (int q = 0; b.obstacles && q < b.obstacle_count; ++q) {
+    const cyc_blend_obstacle& B = b.obstacles[q];
+    if (!input_ok(B.center[0]) || !input_ok(B.center[1]) || !input_ok(B.center[2]) ||
+        !input_ok(B.radius))
+      m |= bit(CYC_E_NOT_FINITE);
+    if (B.radius < 0) m |= bit(CYC_E_INVALID_ARGUMENT);
+  }
+  return m;
+}
+
+unsigned options_statuses(const cyc_optimize_options& p, int K) {
+  unsigned m = 0;
+  for (double x : {p.lambda_min_ratio, p.lambda_max_ratio, p.higher_bound, p.function_tolerance,
+                   p.gradient_tolerance, p.parameter_tolerance})
+    m |= number_status(x);
+  if (!(p.lambda_min_ratio > 0 && p.lambda_min_ratio <= 1) || !(p.lambda_max_ratio >= 1))
+    m |= bit(CYC_E_INVALID_ARGUMENT);
+  if (p.free_orders < 0 || p.free_orders > K || p.max_iterations < 0)
+    m |= bit(CYC_E_INVALID_ARGUMENT);
+  return m;
+}
+
+// The ends, K and the interval, as op_blend validates them.
+unsigned blend_statuses(const OptCall& o) {
+  unsigned m = 0;
+  if (o.kind != CYC_BLEND_CANAL && o.kind != CYC_BLEND_RINGED) m |= bit(CYC_E_INVALID_ARGUMENT);
+  if (o.K < (o.kind == CYC_BLEND_CANAL ? 2 : 1)) m |= bit(CYC_E_INVALID_ARGUMENT);
+  if (o.K > CYC_MAX_BLEND_ORDER) m |= bit(CYC_E_DEGREE_TOO_HIGH);
+  if (!input_ok(o.t0) || !input_ok(o.t1)) m |= bit(CYC_E_NOT_FINITE);
+  else if (!(o.t1 > o.t0)) m |= bit(CYC_E_BAD_DOMAIN);
+  const int count = o.kind == CYC_BLEND_CANAL ? 2 : 3;
+  for (const cyc_blend_end& e : o.ends) {
+    if (!input_ok(e.u) || !input_ok(e.lambda)) m |= bit(CYC_E_NOT_FINITE);
+    for (int k = 2; k <= o.K && o.K <= CYC_MAX_BLEND_ORDER; ++k)
+      if (!input_ok(e.phi[k - 2])) m |= bit(CYC_E_NOT_FINITE);
+    for (int j = 0; j < count; ++j)
+      if (std::isnan(e.v[j])) m |= bit(CYC_E_NOT_FINITE);
+  }
+  return m;
+}
+
+bool required_null(const OptCall& o) {
+  return (o.nulls >= 1 && o.nulls <= 3) || !o.ends[0].surface || !o.ends[1].surface;
+}
+
+// Statuses of a start blend that the optimizer retries with scaled lambdas.
+bool degenerate(int s) {
+  return s == CYC_E_DEPENDENT_PLANES || s == CYC_E_COLLINEAR_POINTS || s == CYC_E_ZERO_TANGENT ||
+         s == CYC_E_SINGULAR_POINT || s == CYC_E_DEGENERATE_CIRCLE_PARAMETER;
+}
+
+// The plain blend of the same ends (its status; CYC_OK builds nothing kept).
+int plain_blend(Ctx& c, const OptCall& o) {
+  cyc_surface* S = nullptr;
+  const int st = o.kind == CYC_BLEND_CANAL
+                     ? cyc_blend_canal(c.ctx, &o.ends[0], &o.ends[1], o.K, o.t0, o.t1, &S)
+                     : cyc_blend_ringed(c.ctx, &o.ends[0], &o.ends[1], o.K, o.t0, o.t1, &S);
+  c.check("cyc_blend_*", st);
+  if (st == CYC_OK) cyc_surface_destroy(c.ctx, S);
+  return st;
+}
+
+// The validation statuses the call may give (0: none, the call solves).
+unsigned validation_mask(const OptCall& o) {
+  return blend_statuses(o) | objective_statuses(o.obj) | options_statuses(o.opt, o.K);
+}
+
+// The work of a valid call's solve in units of one Jacobian evaluation on a
+// 1 x 1 quadrature with up to 4 parameters (~5 ms under ASan and coverage):
+// quadrature nodes x Jet passes x (iterations + 1), plus the start blends.
+// NULL options mean 50 iterations, a NULL objective an 8 x 4 quadrature.
+int solve_work(const OptCall& o) {
+  const int nt = o.null_obj ? 8 : o.obj.quadrature_t, nz = o.null_obj ? 4 : o.obj.quadrature_v;
+  const int it = o.null_opt ? 50 : o.opt.max_iterations;
+  const int free = o.opt.free_orders > 0 ? o.opt.free_orders : std::min(o.K, 2);
+  const int passes = (2 * free + 3) / 4;  // Ceres' dynamic autodiff: 4 derivatives a pass
+  return nt * nz * passes * (it + 1) + 2;
+}
+
+// The same start with a default objective on the same nodes (quadrature,
+// targets' t) and the same bounds, without iterations: OK exactly when the
+// start's frames hold at every node.
+int start_status(Ctx& c, const OptCall& o) {
+  cyc_blend_objective b;
+  cyc_blend_objective_init(&b);
+  b.quadrature_t = o.obj.quadrature_t;
+  b.quadrature_v = o.obj.quadrature_v;
+  b.targets = o.obj.targets;
+  b.target_count = o.obj.target_count;
+  cyc_optimize_options p = o.opt;
+  p.max_iterations = 0;
+  cyc_surface* S = nullptr;
+  const int st = cyc_optimize_blend(c.ctx, o.kind, &o.ends[0], &o.ends[1], o.K, o.t0, o.t1, &b,
+                                    &p, &S, nullptr, nullptr, nullptr);
+  c.check("cyc_optimize_blend (start)", st);
+  if (st == CYC_OK) cyc_surface_destroy(c.ctx, S);
+  return st;
+}
+
+// The status: NULL pointers first, then exactly one of the validation
+// errors present; without any, OK or a status of the blend construction —
+// the plain blend's own failure, and OK where the plain blend is OK and
+// the objective is moderate (a valid start blend is always returned); a
+// valid start fails only by overflowing a huge objective.
+void check_status(Ctx& c, const OptCall& o, unsigned m, int st) {
+  const char* name = cyc_status_name(st);
+  if (required_null(o)) {
+    FZ_CHECK(st == CYC_E_NULL_ARGUMENT, "optimize_blend: NULL gives %s", name);
+    return;
+  }
+  if (!cyc_optimizer_available()) {
+    FZ_CHECK(st == CYC_E_UNSUPPORTED, "optimize_blend without Ceres gives %s", name);
+    return;
+  }
+  if (m) {
+    FZ_CHECK(st > 0 && st < 32 && (m & bit(st)), "optimize_blend: %s, expected mask %#x", name,
+             m);
+    return;
+  }
+  FZ_CHECK(st == CYC_OK || (st >= 100 && st <= 200),
+           "optimize_blend: %s for valid arguments", name);
+  const int plain = plain_blend(c, o);
+  if (plain != CYC_OK && !degenerate(plain))
+    FZ_CHECK(st == plain, "optimize_blend: %s, the plain blend %s", name,
+             cyc_status_name(plain));
+  if (plain == CYC_OK && o.moderate)
+    FZ_CHECK(st == CYC_OK, "optimize_blend: %s though the plain blend is OK", name);
+  if (plain == CYC_OK && st != CYC_OK && start_status(c, o) == CYC_OK)
+    FZ_CHECK(st == CYC_E_NUMERICAL_OVERFLOW, "optimize_blend: %s for a valid start", name);
+}
+
+// ---- OK: the result
+
+// The surfaces of two calls agree bit for bit (and are evaluable).
+void check_same_surface(Ctx& c, const cyc_surface* A, const cyc_surface* B, double t0, double t1,
+                        const char* what) {
+  for (int i = 0; i <= 2; ++i) {
+    const double t = i == 2 ? t1 : t0 + (t1 - t0) * i / 2.0;
+    for (double v : {0.0, 1.0, -2.0}) {
+      double X[3], Y[3];
+      fz::fill_sentinel(X, 3);
+      fz::fill_sentinel(Y, 3);
+      const int a = cyc_surface_eval(c.ctx, A, t, v, X, nullptr, nullptr, nullptr);
+      c.check("cyc_surface_eval", a);
+      const int b = cyc_surface_eval(c.ctx, B, t, v, Y, nullptr, nullptr, nullptr);
+      c.check("cyc_surface_eval", b);
+      FZ_CHECK(a == b && std::memcmp(X, Y, sizeof X) == 0, "optimize_blend: %s differ at t %g",
+               what, t);
+      if (a == CYC_OK) FZ_CHECK(fz::finite3(X), "optimize_blend: non-finite point at t %g", t);
+    }
+  }
+}
+
+// The summary's documented invariants.
+void check_summary(const OptCall& o, const cyc_optimize_summary& m) {
+  const double terms[] = {m.fairness, m.regularity, m.targets, m.obstacles};
+  for (double x : terms) FZ_CHECK(std::isfinite(x) && x >= 0, "optimize_blend: term %g", x);
+  FZ_CHECK(std::isfinite(m.initial_cost) && std::isfinite(m.final_cost) && m.final_cost >= 0,
+           "optimize_blend: costs %g -> %g", m.initial_cost, m.final_cost);
+  FZ_CHECK(m.final_cost <= m.initial_cost, "optimize_blend: cost rose %.17g -> %.17g",
+           m.initial_cost, m.final_cost);
+  const double sum = m.fairness + m.regularity + m.targets + m.obstacles;
+  FZ_CHECK(std::abs(m.final_cost - sum) <= 1e-9 * std::max(m.final_cost, sum),
+           "optimize_blend: final cost %.17g, terms sum to %.17g", m.final_cost, sum);
+  FZ_CHECK(m.termination >= CYC_OPTIMIZE_CONVERGED && m.termination <= CYC_OPTIMIZE_REVERTED,
+           "optimize_blend: termination %d", m.termination);
+  const int max_it = o.null_opt ? 50 : o.opt.max_iterations;
+  FZ_CHECK(m.iterations >= 0 && m.iterations <= max_it, "optimize_blend: %d iterations (max %d)",
+           m.iterations, max_it);
+  FZ_CHECK(std::isfinite(m.seconds) && m.seconds >= 0, "optimize_blend: seconds %g", m.seconds);
+  FZ_CHECK(std::isfinite(m.length_scale) && m.length_scale > 0 && std::isfinite(m.fairness_scale) &&
+               m.fairness_scale >= 0,
+           "optimize_blend: L %g, fairness scale %g", m.length_scale, m.fairness_scale);
+  // Without iterations (or reverted) the result is the start: its fairness
+  // term is weight / 2 by the normalization.
+  if (max_it == 0) FZ_CHECK(m.final_cost == m.initial_cost, "optimize_blend: 0 iterations moved");
+  const double w = o.null_obj ? 1.0 : o.obj.fairness;
+  if ((max_it == 0 || m.termination == CYC_OPTIMIZE_REVERTED) && m.fairness_scale > 0 &&
+      w <= 1e100)
+    FZ_CHECK(std::abs(m.fairness - 0.5 * w) <= 1e-9 * w, "optimize_blend: start fairness %.17g "
+             "!= weight / 2 = %.17g", m.fairness, 0.5 * w);
+}
+
+// A returned end: the input's surface and points, the jet within the
+// documented bounds around the start lambda (with its sign), the orders
+// above free_orders as given.
+void check_end(const OptCall& o, int e, const cyc_blend_end& r) {
+  const cyc_blend_end& E = o.ends[e];
+  FZ_CHECK(r.surface == E.surface && std::memcmp(&r.u, &E.u, sizeof r.u) == 0 &&
+               std::memcmp(r.v, E.v, sizeof r.v) == 0,
+           "optimize_blend: end %d changed its surface, u or v", e);
+  const double l0 = effective_lambda(E, e, o.es[e]->u0, o.es[e]->u1), a = std::abs(l0);
+  const cyc_optimize_options& p = o.opt;
+  const double lo = l0 > 0 ? p.lambda_min_ratio * a : -p.lambda_max_ratio * a;
+  const double hi = l0 > 0 ? p.lambda_max_ratio * a : -p.lambda_min_ratio * a;
+  FZ_CHECK(std::isfinite(r.lambda) && r.lambda != 0 && (r.lambda > 0) == (l0 > 0) &&
+               r.lambda >= lo && r.lambda <= hi,
+           "optimize_blend: end %d lambda %.17g (start %.17g, bounds [%.17g, %.17g])", e,
+           r.lambda, l0, lo, hi);
+  const int K = o.K, free = p.free_orders > 0 ? p.free_orders : std::min(K, 2);
+  for (int m = 2; m <= free; ++m)
+    FZ_CHECK(std::abs(r.phi[m - 2]) <= p.higher_bound * a,
+             "optimize_blend: end %d phi^(%d) = %g beyond %g", e, m, r.phi[m - 2],
+             p.higher_bound * a);
+  for (int i = std::max(free - 1, 0); i < CYC_MAX_BLEND_ORDER - 1; ++i)
+    FZ_CHECK(std::memcmp(&r.phi[i], &E.phi[i], sizeof(double)) == 0,
+             "optimize_blend: end %d fixed phi[%d] changed", e, i);
+}
+
+// The returned ends are the blend: cyc_blend_* rebuilds the same surface.
+void check_rebuild(Ctx& c, const OptCall& o, const OptOut& r) {
+  cyc_surface* Y = nullptr;
+  const int st = o.kind == CYC_BLEND_CANAL
+                     ? cyc_blend_canal(c.ctx, &r.ends[0], &r.ends[1], o.K, o.t0, o.t1, &Y)
+                     : cyc_blend_ringed(c.ctx, &r.ends[0], &r.ends[1], o.K, o.t0, o.t1, &Y);
+  c.check("cyc_blend_*", st);
+  FZ_CHECK(st == CYC_OK, "optimize_blend: its ends do not rebuild: %s", cyc_status_name(st));
+  check_same_surface(c, r.S, Y, o.t0, o.t1, "rebuilt blend and result");
+  cyc_surface_destroy(c.ctx, Y);
+}
+
+// Well-scaled joins keep a small gap with the returned lambda (order 0:
+// free_orders moved phi'' too), as op_blend judges them.
+void check_opt_joins(Ctx& c, const OptCall& o, const OptOut& r) {
+  const bool canal = o.kind == CYC_BLEND_CANAL;
+  if (!o.ws || (canal && !(o.es[0]->canal && o.es[1]->canal))) return;
+  for (int e = 0; e < 2; ++e) {
+    const cyc_blend_end& E = r.ends[e];
+    if (jet_bound(E, E.lambda) > 128) continue;  // wide bounds: not well-scaled
+    cyc_continuity R;
+    const int sr = cyc_continuity_report(c.ctx, E.surface, E.u, E.lambda, r.S, e ? o.t1 : o.t0,
+                                         o.K, nullptr, 16, &R);
+    c.check("cyc_continuity_report", sr);
+    if (sr != CYC_OK) continue;
+    bool conditioned = std::isfinite(R.point_scale);
+    for (int l = 1; l <= o.K; ++l)
+      if (!(R.point_scale_l[l] <= 1e6 * std::max(1.0, R.point_scale))) conditioned = false;
+    FZ_LOG("  optimized join %d: gap %g scale %g%s", e, R.max_gap, R.point_scale,
+           conditioned ? "" : " (ill-conditioned: not judged)");
+    if (conditioned)
+      FZ_CHECK(R.max_gap <= 1e-7 * std::max(R.point_scale, 1e-300),
+               "optimize_blend: join %d gap %g (scale %g)", e, R.max_gap, R.point_scale);
+  }
+}
+
+// A second call with every output gives the same result (determinism, and
+// NULL optional outputs change nothing).
+void check_ok(Ctx& c, const OptCall& o, OptOut& r1) {
+  FZ_CHECK(r1.S && r1.S != OptOut::sentinel_surface(), "optimize_blend: OK without a surface");
+  double d0 = 0, d1 = 0;
+  const int sd = cyc_surface_domain(c.ctx, r1.S, &d0, &d1);
+  c.check("cyc_surface_domain", sd);
+  FZ_CHECK(sd == CYC_OK && d0 == o.t0 && d1 == o.t1, "optimize_blend: domain [%g, %g]", d0, d1);
+  int kind = 0;
+  c.check("cyc_surface_kind", cyc_surface_kind(c.ctx, r1.S, &kind));
+  FZ_CHECK(kind == (o.kind == CYC_BLEND_CANAL ? CYC_SURFACE_PRCS : CYC_SURFACE_PRRS),
+           "optimize_blend: surface kind %d", kind);
+  OptOut r2;
+  const int st2 = call_optimize(c, o, r2, true);
+  c.check("cyc_optimize_blend", st2);
+  FZ_CHECK(st2 == CYC_OK, "optimize_blend: second call gives %s", cyc_status_name(st2));
+  check_same_surface(c, r1.S, r2.S, o.t0, o.t1, "two calls");
+  for (int e = 0; e < 2; ++e)
+    if (o.nulls != 4 + e)
+      FZ_CHECK(std::memcmp(&r1.ends[e], &r2.ends[e], sizeof r2.ends[e]) == 0,
+               "optimize_blend: end %d differs between calls", e);
+  const cyc_optimize_summary &m1 = r1.sum, &m2 = r2.sum;
+  if (o.nulls != 6)
+    FZ_CHECK(m1.initial_cost == m2.initial_cost && m1.final_cost == m2.final_cost &&
+                 m1.iterations == m2.iterations && m1.termination == m2.termination &&
+                 m1.fairness == m2.fairness && m1.regularity == m2.regularity &&
+                 m1.targets == m2.targets && m1.obstacles == m2.obstacles,
+             "optimize_blend: summaries differ between calls");
+  FZ_LOG("  optimize: cost %g -> %g, %d iterations, termination %d, %g s", m2.initial_cost,
+         m2.final_cost, m2.iterations, m2.termination, m2.seconds);
+  check_summary(o, m2);
+  for (int e = 0; e < 2; ++e) check_end(o, e, r2.ends[e]);
+  check_rebuild(c, o, r2);
+  check_opt_joins(c, o, r2);
+  cyc_surface_destroy(c.ctx, r2.S);
+}
+
+void op_optimize(Input& in, Ctx& c) {
+  OptCall o;
+  fuzz_call(in, c, o);
+  for (const cyc_blend_end& E : o.ends)
+    FZ_LOG("  end: u %a v %a %a %a lambda %a phi'' %a", E.u, E.v[0], E.v[1], E.v[2], E.lambda,
+           E.phi[0]);
+  FZ_LOG("  kind %d K %d t0 %a t1 %a nulls %d objective %s options %s", o.kind, o.K, o.t0, o.t1,
+         o.nulls, o.null_obj ? "NULL" : "given", o.null_opt ? "NULL" : "given");
+  const unsigned m = validation_mask(o);
+  FZ_LOG("  optimize: expected mask %#x, moderate %d, ws %d", m, o.moderate, o.ws);
+  // Valid calls solve (twice: determinism); beyond the input's budget they
+  // are skipped, the bytes still consumed. Invalid ones fail fast.
+  if (!m && !required_null(o) && cyc_optimizer_available()) {
+    const int work = solve_work(o);
+    if (work > c.solve_budget) {
+      FZ_LOG("  optimize: skipped (work %d, budget left %d)", work, c.solve_budget);
+      return;
+    }
+    c.solve_budget -= work;
+  }
+  OptOut r;
+  const int st = call_optimize(c, o, r, false);
+  c.check("cyc_optimize_blend", st);
+  check_status(c, o, m, st);
+  if (st != CYC_OK) {
+    FZ_CHECK(r.untouched(), "optimize_blend: output written on error %s", cyc_status_name(st));
+    return;
+  }
+  check_ok(c, o, r);
+  cyc_surface_destroy(c.ctx, r.S);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -540,7 +1085,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   build_surface(in, c, 1);
   const int nops = in.range(1, 12);
   for (int i = 0; i < nops; ++i) {
-    switch (in.range(0, 3)) {
+    // One byte: 0..3 (mod 4) the cheap ops, 63 the optimizer (a Ceres solve
+    // per call: rare enough that the smoke run stays fast). Old inputs decode
+    // as before unless that byte is 63 mod 64.
+    const int op = in.range(0, 63);
+    if (op == 63) {
+      op_optimize(in, c);
+      continue;
+    }
+    switch (op % 4) {
       case 0: op_derivatives(in, c); break;
       case 1: op_blend(in, c, false); break;
       case 2: op_blend(in, c, true); break;

@@ -1463,30 +1463,48 @@ class BlendEncoder(Encoder):
 
     def derivatives(self, pick, u, v, K, null_out=False):
         self.ops.append(0)
-        self.range(0, 3, 0)
+        self.range(0, 63, 0)
         self.pick(pick)
         self.u(u)
         self.v(v)
         self.K(K)
         self.rarely(null_out)
 
-    def end(self, pick, u, vs, lam):
+    def end(self, pick, u, vs, lam, phi=None, bad_phi=None):
+        """phi: None (all 0) or six eighths in [-2, 2] (phi'', ...);
+        bad_phi: None or (index 0..5, NAN or 1e300)."""
         self.pick(pick)
         self.u(u)
         for v in vs:
             self.v(v)
         self.lam(lam)
+        self.rarely(phi is not None)
+        if phi is not None:
+            assert len(phi) == 6
+            for p in phi:
+                self.range(-16, 16, int(p * 8))
+        self.rarely(bad_phi is not None)
+        if bad_phi is not None:
+            self.range(0, 5, bad_phi[0])
+            self.flag(math.isnan(bad_phi[1]))
 
     def blend(self, canal, start, end, K, t=None, nulls=0):
         """start/end: (pick, u, (v0, v1, v2), lambda); end None: identical.
         t: None (0, 1), ("moderate", t0, t1), ("equal", t), ("wild", t0, t1)."""
         self.ops.append(2 if canal else 1)
-        self.range(0, 3, 2 if canal else 1)
+        self.range(0, 63, 2 if canal else 1)
         self.end(*start)
         self.rarely(end is None)
         if end is not None:
             self.end(*end)
         self.K(K)
+        self.interval(t)
+        self.rarely(nulls != 0)
+        if nulls:
+            self.range(1, 3, nulls)
+
+    def interval(self, t):
+        """param_t: None (0, 1), ("moderate", t0, t1), ("equal", t), ("wild", t0, t1)."""
         if t is None:
             self.range(0, 3, 0)
         elif t[0] == "moderate":
@@ -1500,15 +1518,172 @@ class BlendEncoder(Encoder):
             self.range(0, 3, 3)
             self.wild(t[1])
             self.wild(t[2])
+
+    # -- op_optimize (cyc_optimize_blend)
+    BAD_KIND = [-1, 2, 3, -2**31, 2**31 - 1]
+    BAD_QUADRATURE = [0, -1, 17, -2**31, 16]
+
+    def real(self, x):
+        """param_real: None keeps the default; else a sixteenth in [0, 4],
+        an integer 0..8, 0, a negative sixteenth, 1e300 or wild."""
+        self.rarely(x is not None)
+        if x is None:
+            return
+        if not math.isfinite(x) or x == 1e300:
+            self.range(0, 5, 4 if x == 1e300 else 5)
+            if x != 1e300:
+                self.wild(x)
+        elif x == 0:
+            self.range(0, 5, 2)
+        elif x == int(x) and 0 < x <= 8:
+            self.range(0, 5, 1)
+            self.range(0, 8, int(x))
+        elif 0 < x <= 4 and x * 16 == int(x * 16):
+            self.range(0, 5, 0)
+            self.range(0, 64, int(x * 16))
+        elif -4 <= x < 0 and x * 16 == int(x * 16):
+            self.range(0, 5, 3)
+            self.range(1, 64, int(-x * 16))
+        else:
+            self.range(0, 5, 5)
+            self.wild(x)
+
+    def quadrature(self, q):
+        bad = not 1 <= q <= 4
+        self.rarely(bad)
+        if bad:
+            self.range(0, 4, self.BAD_QUADRATURE.index(q))
+        else:
+            self.range(1, 4, q)
+
+    def count(self, items, null_count=None, negative=None):
+        """param_count: the list's length, or a NULL array with null_count
+        items, or a negative count (-1 or INT32_MIN)."""
+        odd = null_count is not None or negative is not None
+        self.rarely(odd)
+        if not odd:
+            self.range(0, 2, len(items))
+        elif negative is not None:
+            self.flag(True)
+            self.flag(negative == -1)
+        else:
+            self.flag(False)
+            self.range(1, 2, null_count)
+
+    def targets(self, items, **odd):
+        """items: (point, t) with t ("frac", sixteenths of [t0, t1]),
+        ("moderate", v) or ("wild", v)."""
+        self.count(items, **odd)
+        if odd:
+            return
+        for point, t in items:
+            for x in point:
+                self.coord(x)
+            kinds = {"frac": 0, "moderate": 1, "wild": 2}
+            self.range(0, 2, kinds[t[0]])
+            if t[0] == "frac":
+                self.range(0, 16, t[1])
+            elif t[0] == "moderate":
+                self.moderate(t[1])
+            else:
+                self.wild(t[1])
+
+    def obstacles(self, items, **odd):
+        """items: (center, radius): a sixteenth in [0, 4], 0, a negative
+        sixteenth >= -1, or ("wild", v)."""
+        self.count(items, **odd)
+        if odd:
+            return
+        for center, r in items:
+            for x in center:
+                self.coord(x)
+            if isinstance(r, tuple):
+                self.range(0, 3, 3)
+                self.wild(r[1])
+            elif r == 0:
+                self.range(0, 3, 1)
+            elif r > 0:
+                self.range(0, 3, 0)
+                self.range(0, 64, int(r * 16))
+            else:
+                self.range(0, 3, 2)
+                self.range(1, 16, int(-r * 16))
+
+    OBJECTIVE_REALS = ("fairness", "regularity", "min_determinant", "min_speed",
+                       "target_weight", "clearance", "obstacle_weight")
+    OPTION_REALS = ("lambda_min_ratio", "lambda_max_ratio", "higher_bound",
+                    "function_tolerance", "gradient_tolerance", "parameter_tolerance")
+
+    def objective(self, o):
+        """o: None (NULL: the defaults) or a dict: the reals above (missing:
+        default), targets / obstacles ((items, odd-kwargs) or items),
+        quadrature (qt, qv)."""
+        self.rarely(o is None)
+        if o is None:
+            return
+        for name in self.OBJECTIVE_REALS:
+            self.real(o.get(name))
+        for name in ("targets", "obstacles"):
+            spec = o.get(name, [])
+            items, odd = spec if isinstance(spec, tuple) else (spec, {})
+            getattr(self, name)(items, **odd)
+        qt, qv = o.get("quadrature", (2, 2))
+        self.quadrature(qt)
+        self.quadrature(qv)
+
+    def options(self, p, K):
+        """p: None (NULL: the defaults, 50 iterations) or a dict: the reals
+        above, free_orders (0..K or a bad value), max_iterations (0..4 or
+        -1 / INT32_MIN)."""
+        self.rarely(p is None)
+        if p is None:
+            return
+        for name in self.OPTION_REALS:
+            self.real(p.get(name))
+        f = p.get("free_orders", 0)
+        top = max(0, min(K, 7))
+        bad = not 0 <= f <= top
+        self.rarely(bad)
+        if bad:
+            self.range(0, 3, [-1, -2**31, 8, min(K, 100) + 1].index(f))
+        else:
+            self.range(0, top, f)
+        it = p.get("max_iterations", 3)
+        self.rarely(not 0 <= it <= 4)
+        if 0 <= it <= 4:
+            self.range(0, 4, it)
+        else:
+            self.flag(it == -1)
+
+    def optimize(self, kind, start, end, K, t=None, objective=None, options=None, nulls=0):
+        """kind: "canal", "ringed" or a BAD_KIND value; start/end as for
+        blend; objective / options: see above (the string "null" for NULL);
+        nulls: 1 start, 2 end, 3 out, 4 start_out, 5 end_out, 6 summary."""
+        self.ops.append(63)
+        self.range(0, 63, 63)
+        bad = kind not in ("canal", "ringed")
+        self.rarely(bad)
+        if bad:
+            self.range(0, 4, self.BAD_KIND.index(kind))
+        else:
+            self.flag(kind == "ringed")
+        self.end(*start)
+        self.rarely(end is None)
+        if end is not None:
+            self.end(*end)
+        self.K(K)
+        self.interval(t)
+        self.objective(None if objective == "null" else (objective or {}))
+        self.options(None if options == "null" else (options or {}), K)
         self.rarely(nulls != 0)
         if nulls:
-            self.range(1, 3, nulls)
+            self.range(1, 6, nulls)
 
     def continuity(self, a, b, ua, ub, lam, K, n, va=None, null_out=False):
         """n: ("few", n in 1..8), ("bad", n in -2..0), ("many", 1..64),
         ("min",) INT32_MIN; va None: NULL."""
         self.ops.append(3)
-        self.range(0, 3, 3)
+        self.range(0, 63, 3)
         self.pick(a)
         self.pick(b)
         self.u(ua)
@@ -1611,6 +1786,9 @@ def blend_seeds():
     e.blend(False, (0, ("lo",), (G, 0, 1), 0), cone_end, 2, ("equal", 0.5))
     e.blend(False, (0, ("lo",), (G, 0, 1), 0), cone_end, 2, ("wild", 1, -1))
     e.blend(False, (0, ("below", 16), (G, 0, 1), 0), (1, ("hi",), (G, 0, 1), 0), 2)
+    # t1 = 2^192 overflows the power-form Hermite curves (the raw input
+    # regress-blend-huge-interval decodes differently since ends read phi).
+    e.blend(False, (0, ("lo",), (G, 0, 1), 0), cone_end, 2, ("wild", 0, 2.0**192))
     e.derivatives(0, ("wild", NAN), 0, 2)
     e.derivatives(0, ("lo",), -G, -1)
     e.derivatives(0, ("wild", 1e30), 1, 7)
@@ -1619,6 +1797,82 @@ def blend_seeds():
     e.continuity(0, 1, ("lo",), ("hi",), 1e90, 3, ("few", 2))
     e.continuity(2, 0, ("lo",), ("hi",), 1, 3, ("few", 2), null_out=True)
     seeds["seed-hostile-args"] = e.finish()
+    seeds.update(optimize_seeds(l1, l2))
+    return seeds
+
+
+def optimize_seeds(l1, l2):
+    """Seeds of op_optimize (cyc_optimize_blend): few iterations, small
+    quadratures."""
+    seeds = {}
+    G = INF
+    # Fig. 6 cones: ringed K = 1, 2, 3 and canal K = 2; a target, an
+    # obstacle, free_orders 1, 0 iterations, NULL optional outputs.
+    e = BlendEncoder([("cone",), ("cone",)])
+    e.start_ops()
+    vs = (G, -0.5, 0.75)
+    ringed = ((0, ("hi",), vs, 0), (1, ("hi",), vs, 0))
+    canal = ((0, ("hi",), (G, 0.25, 0), 0), (1, ("hi",), (G, 0.25, 0), 0))
+    e.optimize("ringed", *ringed, 1, options={"max_iterations": 4})
+    e.optimize("ringed", *ringed, 2, objective={"targets": [((2, 0, 3), ("frac", 8))],
+                                                "quadrature": (3, 2)},
+               options={"max_iterations": 2, "free_orders": 1})
+    e.optimize("canal", *canal, 2, objective={"obstacles": [((2, 0, 2), 0.5)],
+                                              "quadrature": (2, 1)}, nulls=4)
+    e.optimize("ringed", *ringed, 3, options={"max_iterations": 0}, nulls=6)
+    e.continuity(0, 1, ("hi",), ("hi",), -1, 2, ("few", 3), va=[G, 0, ("tan", 40)])
+    seeds["seed-optimize-fig6"] = e.finish()
+    # Lines: explicit lambdas and phi, a moderate interval, targets and an
+    # obstacle with every free order, and a NULL objective (the defaults,
+    # 8 x 4 quadrature) without iterations. Each input may spend 60 work
+    # units on solves (fuzz_blend.cpp kSolveBudget): these use 56.
+    e = BlendEncoder([("prrs", l1, (0, 4)), ("prcs", l2, (-2, 6))])
+    e.start_ops()
+    e.optimize("ringed", (0, ("hi",), (G, 1, -1), 1.5), (1, ("lo",), (G, 0.5, -2), 0.75), 2,
+               t=("moderate", -1, 2), objective={"quadrature": (1, 2)},
+               options={"free_orders": 2, "max_iterations": 2})
+    e.optimize("canal", (1, ("in", 4), (1, -1, 0), -1, (0.5, -0.25, 0, 0, 0, 0)),
+               (0, ("lo",), (G, 2, 0), 1), 3,
+               objective={"targets": [((0, 1, 1), ("frac", 4)), ((1, 0, 2), ("moderate", 0.25))],
+                          "obstacles": [((0.5, 0.5, 0.5), 0.25)], "clearance": 0.125,
+                          "quadrature": (1, 2)},
+               options={"free_orders": 3, "max_iterations": 2, "higher_bound": 0.5})
+    e.optimize("ringed", (0, ("hi",), (G, 1, -1), 0), (1, ("lo",), (G, 0.5, -2), 0), 2,
+               objective="null", options={"max_iterations": 0})
+    seeds["seed-optimize-lines"] = e.finish()
+    # The defaults: NULL options (50 iterations) on a 1 x 1 quadrature (53
+    # units), and NULL objective and options together on validation errors
+    # (a solve with both is beyond the budget).
+    e = BlendEncoder([("cone",), ("cone",)])
+    e.start_ops()
+    vs = (G, -0.5, 0.75)
+    ringed = ((0, ("hi",), vs, 0), (1, ("hi",), vs, 0))
+    e.optimize("ringed", *ringed, 1, objective={"quadrature": (1, 1)}, options="null")
+    e.optimize("ringed", *ringed, 0, objective="null", options="null")
+    e.optimize("canal", *ringed, 2, t=("equal", 0.5), objective="null", options="null")
+    e.optimize("ringed", *ringed, 2, objective="null", options="null", nulls=3)
+    seeds["seed-optimize-defaults"] = e.finish()
+    # Hostile: each validation error once, NULL pointers, huge (valid) weights.
+    e = BlendEncoder([("cone",), ("prrs", l1, (0, 4))], handler=False)
+    e.start_ops()
+    cone = (0, ("hi",), (G, -0.5, 0.75), 0)
+    other = (1, ("lo",), (G, 1, -1), 0)
+    e.optimize(2, cone, other, 1)
+    e.optimize("canal", cone, other, 1)
+    e.optimize("ringed", cone, other, 8)
+    e.optimize("ringed", cone, other, 2, objective={"targets": ([], {"null_count": 2}),
+                                                    "obstacles": ([], {"negative": -1})})
+    e.optimize("ringed", cone, other, 2, objective={"fairness": NAN, "regularity": -0.5,
+                                                    "min_determinant": 2, "quadrature": (0, 17)})
+    e.optimize("ringed", cone, other, 2, objective={"obstacles": [((0, 0, 0), -0.5)]})
+    e.optimize("ringed", cone, other, 2, options={"lambda_min_ratio": 2, "lambda_max_ratio": 0.5})
+    e.optimize("ringed", cone, other, 2, options={"free_orders": 3, "max_iterations": -1})
+    e.optimize("ringed", (0, ("hi",), (NAN, 0, 1), 0), other, 1, t=("equal", 0.5))
+    e.optimize("ringed", cone, other, 1, nulls=3)
+    e.optimize("ringed", cone, None, 1, nulls=1)
+    e.optimize("ringed", cone, other, 1, objective={"fairness": 1e300, "target_weight": 1e300,
+                                                    "targets": [((1, 1, 1), ("moderate", 0.5))]})
+    seeds["seed-optimize-hostile"] = e.finish()
     return seeds
 
 

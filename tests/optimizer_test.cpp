@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "cyclide/cyclide.h"
@@ -226,4 +227,68 @@ TEST(Optimizer, BlendErrorsLeaveOutputsUntouched) {
             CYC_E_BAD_DOMAIN);
   untouched();
   EXPECT_NE(std::string(cyc_context_last_error(f.ctx)), "");
+}
+
+// Regression (fuzz_blend regress-optimize-denormal-lambda): a denormal
+// lambda scaled by 1/2 for a second start underflowed to 0, which means
+// "the default +-1": cyc_optimize_blend returned OK with ends of lambda 0
+// and a blend its summary did not describe. No start or bound reaches 0 now.
+TEST(Optimizer, RegressionDenormalLambdaNeverBecomesTheDefault) {
+  Fig6 f;
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  f.s.lambda = tiny;
+  f.e.lambda = -tiny;
+  cyc_optimize_options p;
+  cyc_optimize_options_init(&p);
+  p.max_iterations = 4;
+  for (int kind : {CYC_BLEND_CANAL, CYC_BLEND_RINGED}) {
+    cyc_surface *X = nullptr, *Y = nullptr;
+    cyc_blend_end so{}, eo{};
+    const int plain = kind == CYC_BLEND_CANAL ? cyc_blend_canal(f.ctx, &f.s, &f.e, 2, 0, 1, &Y)
+                                              : cyc_blend_ringed(f.ctx, &f.s, &f.e, 2, 0, 1, &Y);
+    const int st =
+        cyc_optimize_blend(f.ctx, kind, &f.s, &f.e, 2, 0, 1, nullptr, &p, &X, &so, &eo, nullptr);
+    if (plain != CYC_OK) {
+      EXPECT_EQ(st, plain) << kind;  // canal: a zero tangent for every scaled lambda
+    } else {
+      ASSERT_EQ(st, CYC_OK) << cyc_context_last_error(f.ctx);
+      EXPECT_GT(so.lambda, 0.0);
+      EXPECT_LT(eo.lambda, 0.0);
+    }
+    cyc_surface_destroy(f.ctx, X);
+    cyc_surface_destroy(f.ctx, Y);
+  }
+}
+
+// Regression (fuzz_blend regress-optimize-huge-clearance): valid but huge
+// objective numbers overflow the cost at a valid start blend; that was
+// reported as CYC_E_DEPENDENT_PLANES (even for a ringed blend), now
+// CYC_E_NUMERICAL_OVERFLOW. Moderate ones still optimize.
+TEST(Optimizer, RegressionObjectiveOverflowIsNotDependentPlanes) {
+  Fig6 f;
+  cyc_blend_objective o;
+  cyc_blend_objective_init(&o);
+  const cyc_blend_obstacle ball{{0, 0, 0}, 1.0};
+  o.obstacles = &ball;
+  o.obstacle_count = 1;
+  o.quadrature_t = 2;
+  o.quadrature_v = 2;
+  cyc_optimize_options p;
+  cyc_optimize_options_init(&p);
+  p.max_iterations = 2;
+  for (double clearance : {1e300, 0.5}) {
+    o.clearance = clearance;
+    cyc_surface* X = nullptr;
+    const int st = cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, &o, &p, &X,
+                                      nullptr, nullptr, nullptr);
+    EXPECT_EQ(st, clearance > 1 ? CYC_E_NUMERICAL_OVERFLOW : CYC_OK) << clearance;
+    cyc_surface_destroy(f.ctx, X);
+  }
+  o.clearance = 0;
+  o.fairness = std::numeric_limits<double>::max();
+  cyc_surface* X = reinterpret_cast<cyc_surface*>(&o);  // untouched on error
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, &o, &p, &X, nullptr,
+                               nullptr, nullptr),
+            CYC_E_NUMERICAL_OVERFLOW);
+  EXPECT_EQ(X, reinterpret_cast<cyc_surface*>(&o));
 }

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -193,9 +194,16 @@ void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T&
 
 // The residual vector (layout: per t node the determinant hinge, one
 // clearance hinge per obstacle, then per chart and z node 9 fairness and 1
-// speed hinge; then 2 per target).
+// speed hinge; then 2 per target). False where a node's frame is
+// degenerate or a residual is not finite; *why (if given) tells which.
 template <class T>
-bool evaluate(const Problem& P, const T* params, T* r, Terms* terms) {
+bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why = nullptr) {
+  auto fail = [why](Status s) {
+    if (why) *why = s;
+    return false;
+  };
+  const Status degenerate =
+      P.kind == BlendKind::canal ? Status::dependent_planes : Status::collinear_points;
   T jet[2][kMaxBlendOrder];
   for (int e = 0; e < 2; ++e)
     for (int m = 0; m < P.K; ++m) jet[e][m] = m < P.free ? params[e * P.free + m] : T(P.jet0[e][m]);
@@ -217,7 +225,7 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms) {
     curves_at(P, P.basis(i), d, Q);
     CircleFrame<Taylor<T, 2>> F;
     T rd;
-    if (!frame_of(P, Q, F, rd)) return false;
+    if (!frame_of(P, Q, F, rd)) return fail(degenerate);
     r[k] = w_reg * hinge(T((O.min_determinant - rd) / O.min_determinant));
     add(&Terms::regularity, r[k++]);
     for (const SphereObstacle& S : P.obstacles) {
@@ -259,7 +267,7 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms) {
     curves_at(P, &P.TB[q * P.slots()], d, Q);
     CircleFrame<Taylor<T, 2>> F;
     T rd;
-    if (!frame_of(P, Q, F, rd)) return false;
+    if (!frame_of(P, Q, F, rd)) return fail(degenerate);
     T h, radial;
     circle_offsets(F, P.targets[q].point, h, radial);
     r[k] = w_tgt * h / P.L;
@@ -268,7 +276,7 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms) {
     add(&Terms::targets, r[k++]);
   }
   for (int q = 0; q < k; ++q)
-    if (!std::isfinite(value_of(r[q]))) return false;
+    if (!std::isfinite(value_of(r[q]))) return fail(Status::numerical_overflow);
   return true;
 }
 
@@ -280,13 +288,17 @@ struct Residuals {
   }
 };
 
-// Cost 1/2 |r|^2 at params (double), with its terms; false if invalid.
-bool cost_at(const Problem& P, const std::vector<double>& params, double& cost, Terms& terms) {
+// Cost 1/2 |r|^2 at params (double), with its terms. Not ok: the blend's
+// degeneracy at a node, or numerical_overflow where valid but huge weights,
+// clearance or min_speed overflow the objective (it said dependent_planes
+// for those: fuzz_blend regress-optimize-huge-clearance).
+Status cost_at(const Problem& P, const std::vector<double>& params, double& cost, Terms& terms) {
   std::vector<double> r(size_t(P.residuals()));
   terms = Terms{};
-  if (!evaluate(P, params.data(), r.data(), &terms)) return false;
+  Status why = Status::ok;
+  if (!evaluate(P, params.data(), r.data(), &terms, &why)) return why;
   cost = terms.fairness + terms.regularity + terms.targets + terms.obstacles;
-  return std::isfinite(cost);
+  return std::isfinite(cost) ? Status::ok : Status::numerical_overflow;
 }
 
 bool finite_nonneg(double x) { return std::isfinite(x) && x >= 0; }
@@ -393,6 +405,9 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
     std::copy(&jet0[0][0], &jet0[0][0] + 2 * kMaxBlendOrder, &jet[0][0]);
     jet[0][0] *= f;
     jet[1][0] *= f;
+    // A denormal lambda scaled to 0 would build the default +-1 blend
+    // (fuzz_blend regress-optimize-denormal-lambda).
+    if (jet[0][0] == 0 || jet[1][0] == 0) continue;
     double bad = 0;
     const Status st = build(kind, start, end, jet, K, t0, t1, S0, &bad, nullptr, nullptr);
     if (st == Status::ok) {
@@ -461,12 +476,15 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   // Bounds, the start point (clamped into them) and the fairness
   // normalizer: the start blend's fairness integral F0, so that the
   // fairness term is weight * F / F0 / 2 (1/2 the weight at the start).
+  // lambda = 0 means the default +-1: the bounds keep it out (min_ratio
+  // |lambda_0| underflows to 0 for a denormal lambda_0).
   std::vector<double> x(size_t(2 * P.free)), lo(x.size()), hi(x.size());
+  constexpr double tiny = std::numeric_limits<double>::denorm_min();
   for (int e = 0; e < 2; ++e) {
     const double l0 = jet0[e][0], a = std::abs(l0);
     const size_t b = size_t(e * P.free);
-    lo[b] = l0 > 0 ? options.lambda_min_ratio * a : -options.lambda_max_ratio * a;
-    hi[b] = l0 > 0 ? options.lambda_max_ratio * a : -options.lambda_min_ratio * a;
+    lo[b] = l0 > 0 ? std::max(options.lambda_min_ratio * a, tiny) : -options.lambda_max_ratio * a;
+    hi[b] = l0 > 0 ? options.lambda_max_ratio * a : std::min(-options.lambda_min_ratio * a, -tiny);
     for (int m = 1; m < P.free; ++m) {
       lo[b + m] = -options.higher_bound * a;
       hi[b + m] = options.higher_bound * a;
@@ -477,11 +495,11 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   Terms terms0;
   double cost0 = 0;
   P.obj.fairness = 1.0;
-  if (!cost_at(P, x, cost0, terms0)) return Status::dependent_planes;
+  if (Status st = cost_at(P, x, cost0, terms0); st != Status::ok) return st;
   const double F0 = 2 * terms0.fairness;
   P.fair_norm = F0 > 0 ? 1.0 / std::sqrt(F0) : 1.0;
   P.obj.fairness = objective.fairness;
-  if (!cost_at(P, x, cost0, terms0)) return Status::dependent_planes;
+  if (Status st = cost_at(P, x, cost0, terms0); st != Status::ok) return st;
   const std::vector<double> x_start = x;
 
   // Solve.
@@ -515,7 +533,7 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   R.fairness_scale = F0;
   double cost1 = 0;
   Terms terms1;
-  bool use = cost_at(P, x, cost1, terms1) && cost1 <= cost0;
+  bool use = cost_at(P, x, cost1, terms1) == Status::ok && cost1 <= cost0;
   Surface S1;
   BlendEnd s1, e1;
   if (use) {
