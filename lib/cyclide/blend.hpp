@@ -51,18 +51,26 @@ struct BlendEnd {
 // composition of truncated series). Generic in the scalar of the jet
 // (double, or a Ceres Jet when the optimizer differentiates a blend with
 // respect to its free scalars).
-template <class S>
-void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
-  constexpr int N = kMaxBlendOrder;
+// The series of phi(t) - phi(t_end) of order N from jet[m - 1] = phi^(m),
+// m = 1..K (K <= N): c[m] = phi^(m)/m!.
+template <int N, class S>
+Taylor<S, N> reparameterization_series(const S* jet, int K) {
   Taylor<S, N> h;
   double fact = 1.0;
   for (int m = 1; m <= K; ++m) {
     fact *= m;
     h.c[m] = jet[m - 1] / S(fact);
   }
+  return h;
+}
+
+template <class S>
+void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
+  constexpr int N = kMaxBlendOrder;
+  const Taylor<S, N> h = reparameterization_series<N>(jet, K);
   for (int j = 0; j < 3; ++j) {
     Taylor<double, N> f;
-    fact = 1.0;
+    double fact = 1.0;
     for (int k = 0; k <= K; ++k) {
       if (k > 0) fact *= k;
       f.c[k] = dx[k][j] / fact;

@@ -177,19 +177,17 @@ void point_series2(const CircleQuadratic<Taylor<T, 2>>& C, double z,
 // sampling along v).
 template <class T>
 void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T& radial) {
-  Vec3<T> o, a, p;
+  CircleFrame<T> V;  // the frame's values
   for (int c = 0; c < 3; ++c) {
-    o[c] = F.o[c].c[0];
-    a[c] = F.a[c].c[0];
-    p[c] = F.p[c].c[0];
+    V.o[c] = F.o[c].c[0];
+    V.a[c] = F.a[c].c[0];
+    V.p[c] = F.p[c].c[0];
   }
-  const Vec3<T> dd = p - o;
-  const T aa = a.squaredNorm(), ad = a.dot(dd);
-  const Vec3<T> center = o + (ad / aa) * a, n = a / sqrt_of(aa);
-  const T radius = sqrt_of(T(dd.squaredNorm() - ad * ad / aa));
-  const Vec3<T> w = X.cast<T>() - center;
+  const CircleGeometry<T> G = circle_geometry(V);
+  const Vec3<T> n = G.normal / sqrt_of(T(G.normal.squaredNorm()));
+  const Vec3<T> w = X.cast<T>() - G.center;
   h = w.dot(n);
-  radial = sqrt_of(T((w - h * n).squaredNorm())) - radius;
+  radial = sqrt_of(T((w - h * n).squaredNorm())) - sqrt_of(G.radius2);
 }
 
 // The residual vector (layout: per t node the determinant hinge, one
@@ -368,13 +366,11 @@ double length_scale(const BlendEnd& s, const BlendEnd& e) {
 
 // The Hermite basis series at t: slot (e, l) is the curve with unit data
 // there (x component), zero elsewhere.
-Status basis_at(int K, double t0, double t1, const RationalCurve* unit, double t, Basis* out) {
+Status basis_at(int K, const RationalCurve* unit, double t, Basis* out) {
   for (int q = 0; q < 2 * (K + 1); ++q) out[q] = unit[q].taylor<kOrder>(t)[0];
   for (int q = 0; q < 2 * (K + 1); ++q)
     for (int k = 0; k <= kOrder; ++k)
       if (!std::isfinite(out[q].c[k])) return Status::numerical_overflow;
-  (void)t0;
-  (void)t1;
   return Status::ok;
 }
 
@@ -464,12 +460,12 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   P.B.resize(size_t(P.nt) * P.slots());
   for (int i = 0; i < P.nt; ++i) {
     const double t = 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * tn[i];
-    if (Status st = basis_at(K, t0, t1, unit, t, &P.B[size_t(i) * P.slots()]); st != Status::ok)
+    if (Status st = basis_at(K, unit, t, &P.B[size_t(i) * P.slots()]); st != Status::ok)
       return st;
   }
   P.TB.resize(P.targets.size() * P.slots());
   for (size_t q = 0; q < P.targets.size(); ++q)
-    if (Status st = basis_at(K, t0, t1, unit, P.targets[q].t, &P.TB[q * P.slots()]);
+    if (Status st = basis_at(K, unit, P.targets[q].t, &P.TB[q * P.slots()]);
         st != Status::ok)
       return st;
 

@@ -256,13 +256,7 @@ namespace {
 // u_A = phi(u_B) (Faa di Bruno).
 template <int N>
 Taylor<double, N> composed(const Taylor<double, N>& f, const double* jet) {
-  Taylor<double, N> h;
-  double fact = 1.0;
-  for (int m = 1; m <= N; ++m) {
-    fact *= m;
-    h.c[m] = jet[m - 1] / fact;
-  }
-  return compose(f, h);
+  return compose(f, reparameterization_series<N>(jet, N));
 }
 template <int N>
 Vec3<Taylor<double, N>> composed(const Vec3<Taylor<double, N>>& f, const double* jet) {
