@@ -1,6 +1,6 @@
 // Fuzz target of the blends of the C ABI (SPEC §8d, issue 4):
-// cyc_surface_derivatives_u, cyc_blend_canal, cyc_blend_ringed and
-// cyc_continuity_report on two input surfaces built from fuzzed data (the
+// cyc_surface_derivatives_u, cyc_blend_canal, cyc_blend_ringed,
+// cyc_blend_ringed_matched and cyc_continuity_report on two input surfaces built from fuzzed data (the
 // Fig. 6-like cones of tests/blend_test.cpp, PRRS of three lines, PRCS of
 // two lines or two cubics; coincident lines and wild coordinates make
 // degenerate ones likely), with hostile arguments: NULL surfaces / ends /
@@ -337,8 +337,9 @@ void param_t(Input& in, double& t0, double& t1, bool& ws) {
   }
 }
 
-void op_blend(Input& in, Ctx& c, bool canal) {
-  const char* fn = canal ? "cyc_blend_canal" : "cyc_blend_ringed";
+void op_blend(Input& in, Ctx& c, bool canal, bool matched = false) {
+  const char* fn =
+      canal ? "cyc_blend_canal" : matched ? "cyc_blend_ringed_matched" : "cyc_blend_ringed";
   bool ws = true;
   cyc_blend_end ends[2];
   const Surf* es[2];
@@ -360,8 +361,9 @@ void op_blend(Input& in, Ctx& c, bool canal) {
     const cyc_blend_end* a = nulls == 1 ? nullptr : &ends[0];
     const cyc_blend_end* b = nulls == 2 ? nullptr : &ends[1];
     cyc_surface** oo = nulls == 3 ? nullptr : o;
-    return canal ? cyc_blend_canal(c.ctx, a, b, K, t0, t1, oo)
-                 : cyc_blend_ringed(c.ctx, a, b, K, t0, t1, oo);
+    if (canal) return cyc_blend_canal(c.ctx, a, b, K, t0, t1, oo);
+    return matched ? cyc_blend_ringed_matched(c.ctx, a, b, K, t0, t1, oo)
+                   : cyc_blend_ringed(c.ctx, a, b, K, t0, t1, oo);
   };
   for (const cyc_blend_end& E : ends)
     FZ_LOG("  end: u %a v %a %a %a lambda %a phi'' %a", E.u, E.v[0], E.v[1], E.v[2], E.lambda,
@@ -1085,12 +1087,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   build_surface(in, c, 1);
   const int nops = in.range(1, 12);
   for (int i = 0; i < nops; ++i) {
-    // One byte: 0..3 (mod 4) the cheap ops, 63 the optimizer (a Ceres solve
-    // per call: rare enough that the smoke run stays fast). Old inputs decode
-    // as before unless that byte is 63 mod 64.
+    // One byte: 0..3 (mod 4) the cheap ops, 62 the matched ringed blend, 63
+    // the optimizer (a Ceres solve per call: rare enough that the smoke run
+    // stays fast). Old inputs decode as before unless that byte is 62 or 63.
     const int op = in.range(0, 63);
     if (op == 63) {
       op_optimize(in, c);
+      continue;
+    }
+    if (op == 62) {
+      op_blend(in, c, false, true);
       continue;
     }
     switch (op % 4) {

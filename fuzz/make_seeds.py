@@ -1488,11 +1488,13 @@ class BlendEncoder(Encoder):
             self.range(0, 5, bad_phi[0])
             self.flag(math.isnan(bad_phi[1]))
 
-    def blend(self, canal, start, end, K, t=None, nulls=0):
+    def blend(self, canal, start, end, K, t=None, nulls=0, matched=False):
         """start/end: (pick, u, (v0, v1, v2), lambda); end None: identical.
-        t: None (0, 1), ("moderate", t0, t1), ("equal", t), ("wild", t0, t1)."""
-        self.ops.append(2 if canal else 1)
-        self.range(0, 63, 2 if canal else 1)
+        t: None (0, 1), ("moderate", t0, t1), ("equal", t), ("wild", t0, t1).
+        matched: cyc_blend_ringed_matched (op byte 62)."""
+        op = 62 if matched else 2 if canal else 1
+        self.ops.append(op)
+        self.range(0, 63, op)
         self.end(*start)
         self.rarely(end is None)
         if end is not None:
@@ -1797,6 +1799,23 @@ def blend_seeds():
     e.continuity(0, 1, ("lo",), ("hi",), 1e90, 3, ("few", 2))
     e.continuity(2, 0, ("lo",), ("hi",), 1, 3, ("few", 2), null_out=True)
     seeds["seed-hostile-args"] = e.finish()
+    # Matched circle parameterizations: the Fig. 6 cones K = 1..3, the
+    # lines, and v triples in opposite cyclic orders (refused).
+    e = BlendEncoder([("cone",), ("cone",)])
+    e.start_ops()
+    for K in (1, 2, 3):
+        e.blend(False, (0, ("hi",), vs, 0), (1, ("hi",), vs, 0), K, matched=True)
+    e.blend(False, (0, ("hi",), (G, -0.5, 0.75), 0), (1, ("hi",), (G, 0.75, -0.5), 0), 1,
+            matched=True)
+    e.continuity(0, 1, ("hi",), ("hi",), -1, 2, ("few", 3), va=[G, 0, ("tan", 40)])
+    seeds["seed-matched-cones"] = e.finish()
+    e = BlendEncoder([("prrs", l1, (0, 4)), ("prrs", l1, (-2, 6))])
+    e.start_ops()
+    e.blend(False, (0, ("hi",), (G, 1, -1), 1.5), (1, ("lo",), (G, 1, -1), 0.75), 2,
+            ("moderate", -1, 2), matched=True)
+    e.blend(False, (0, ("above", 8), (0, 1, 2), 0), (1, ("below", 3), (-1, 0, 1), 0), 1,
+            matched=True)
+    seeds["seed-matched-lines"] = e.finish()
     seeds.update(optimize_seeds(l1, l2))
     return seeds
 

@@ -11,6 +11,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "cyclide/blend.hpp"
 
@@ -96,14 +97,12 @@ bool points_apart(const Surface& S, double u, const double* v, int count) {
   return true;
 }
 
-}  // namespace
-
-RC_GTEST_PROP(BlendProperties, RingedBlendIsCKOrDegenerate, ()) {
-  Surface A, B;
+// Two random line-ringed surfaces (the second moved apart), the ends A(1)
+// -> B(0) with three well-separated points each, and K in 1..3.
+int random_ringed_join(Surface& A, Surface& B, BlendEnd& s, BlendEnd& e) {
   RC_PRE(random_surface(false, Vec3d(0, 0, 0), A));
   RC_PRE(random_surface(false, Vec3d(6, 1, 0), B));
   const int K = *rc::gen::inRange(1, 4);
-  BlendEnd s, e;
   s.surface = &A;
   s.u = 1.0;
   e.surface = &B;
@@ -111,6 +110,15 @@ RC_GTEST_PROP(BlendProperties, RingedBlendIsCKOrDegenerate, ()) {
   random_vs(s.v, 3);
   random_vs(e.v, 3);
   RC_PRE(points_apart(A, s.u, s.v, 3) && points_apart(B, e.u, e.v, 3));
+  return K;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(BlendProperties, RingedBlendIsCKOrDegenerate, ()) {
+  Surface A, B;
+  BlendEnd s, e;
+  const int K = random_ringed_join(A, B, s, e);
   Surface X;
   double bad = -1;
   const Status st = make_ringed_blend(s, e, K, 0.0, 1.0, X, &bad);
@@ -147,4 +155,45 @@ RC_GTEST_PROP(BlendProperties, CanalBlendIsG1OrDegenerate, ()) {
   }
   check_join(A, 1.0, 1.0, X, 0.0, K, true);
   check_join(B, 0.0, 1.0, X, 1.0, K, true);
+}
+
+// BlendCircles::matched (Prop. 7 with the inputs' own f): where the
+// generator blend exists, the matched one is either refused with
+// degenerate_circle_parameter (the end maps' orientations differ, or the
+// interpolated Mobius family degenerates inside) or continues both inputs'
+// parameterizations to order K for every v, on the generator blend's circles.
+RC_GTEST_PROP(BlendProperties, MatchedRingedBlendIsCKForEveryVOrRefused, ()) {
+  Surface A, B;
+  BlendEnd s, e;
+  const int K = random_ringed_join(A, B, s, e);
+  Surface G, M;
+  RC_PRE(make_ringed_blend(s, e, K, 0.0, 1.0, G) == Status::ok);
+  double bad = -1;
+  const Status st = make_ringed_blend(s, e, K, 0.0, 1.0, M, &bad, nullptr, BlendCircles::matched);
+  if (st != Status::ok) {
+    RC_ASSERT(st == Status::degenerate_circle_parameter);
+    RC_ASSERT(bad >= 0.0 && bad <= 1.0);
+    RC_TAG("refused");
+    RC_SUCCEED("refused with degenerate_circle_parameter");
+  }
+  for (const auto& J : {std::make_pair(&A, 0.0), std::make_pair(&B, 1.0)}) {
+    const double u = J.second == 0.0 ? 1.0 : 0.0;
+    ContinuityReport R;
+    RC_PRE(continuity_report(*J.first, u, 1.0, M, J.second, K, nullptr, 24, R) == Status::ok);
+    for (int l = 1; l <= K; ++l) RC_PRE(R.point_scale_l[l] <= 1e6 * std::max(1.0, R.point_scale));
+    RC_ASSERT(R.max_gap <= kGapTol * R.point_scale);
+    for (int l = 0; l <= K; ++l)
+      RC_ASSERT(R.point_jump[l] <= kCircleTol * std::max(R.point_scale_l[l], R.point_scale));
+  }
+  const double t = *rc::gen::inRange(0, 101) / 100.0;
+  const double v = std::tan(*rc::gen::inRange(-156, 157) / 100.0);
+  double x[3];
+  RC_ASSERT(M.eval(t, v, {x, nullptr, nullptr, nullptr}) == Status::ok);
+  Vec3d c, n;
+  double r2;
+  RC_ASSERT(G.circle(t, c, n, r2) == Status::ok);
+  const Vec3d X(x[0], x[1], x[2]);
+  const double scale = c.norm() + std::sqrt(r2);
+  RC_ASSERT(std::abs((X - c).norm() - std::sqrt(r2)) <= kGapTol * scale);
+  RC_ASSERT(std::abs((X - c).dot(n)) <= kGapTol * scale);
 }

@@ -46,6 +46,36 @@ Surface canal() {
   return S;
 }
 
+// The guide of the spline blends: the cylinder of radius 1 about the axis
+// (1, 0, 1) through (1.2, 0, 2.8) (reached at u = 1/2), PRRS of three lines.
+Surface guide_cylinder() {
+  const Vec3d axis(1, 0, 1), c0(1.2, 0, 2.8);
+  const Vec3d e1 = Vec3d(1, 0, -1).normalized(), e2(0, 1, 0);
+  RationalCurve L[3];
+  for (int k = 0; k < 3; ++k) {
+    const double a = 2 * kPi * k / 3;
+    EXPECT_EQ(make_line(c0 + std::cos(a) * e1 + std::sin(a) * e2 - 0.5 * axis, axis, L[k]),
+              Status::ok);
+  }
+  Surface G;
+  EXPECT_EQ(make_prrs(L[0], L[1], L[2], nullptr, 0.0, 1.0, G), Status::ok);
+  return G;
+}
+
+// Ends of a spline blend from cone A (upper end) through the guide's waist
+// circle (lambda 2: along the guide's u, from A towards B) to cone B.
+void guide_ends(const Surface& A, const Surface& G, const Surface& B, BlendEnd (&ends)[3]) {
+  const Surface* S[3] = {&A, &G, &B};
+  const double us[3] = {1.0, 0.5, 1.0}, vs[3] = {HUGE_VAL, -0.5, 0.7};
+  for (int i = 0; i < 3; ++i) {
+    ends[i] = BlendEnd();
+    ends[i].surface = S[i];
+    ends[i].u = us[i];
+    for (int j = 0; j < 3; ++j) ends[i].v[j] = vs[j];
+  }
+  ends[1].lambda = 2.0;
+}
+
 double rel(const Vec3d& a, const Vec3d& b) {
   return (a - b).norm() / std::max(1.0, std::max(a.norm(), b.norm()));
 }
@@ -242,27 +272,10 @@ TEST(Hermite, SplinePiecesJoinCK) {
 // family and the generator point), each is G^K to the guide and the outer
 // pieces to the cones.
 TEST(RingedBlend, SplineThroughAGuideCircle) {
-  const Surface A = cone1(), B = cone2();
-  const Vec3d axis(1, 0, 1), c0(1.2, 0, 2.8);
-  const Vec3d e1 = Vec3d(1, 0, -1).normalized(), e2(0, 1, 0);
-  RationalCurve L[3];
-  for (int k = 0; k < 3; ++k) {
-    const double a = 2 * kPi * k / 3;
-    ASSERT_EQ(make_line(c0 + std::cos(a) * e1 + std::sin(a) * e2 - 0.5 * axis, axis, L[k]),
-              Status::ok);
-  }
-  Surface G;
-  ASSERT_EQ(make_prrs(L[0], L[1], L[2], nullptr, 0.0, 1.0, G), Status::ok);
+  const Surface A = cone1(), B = cone2(), G = guide_cylinder();
   for (int K = 1; K <= 2; ++K) {
     BlendEnd ends[3];
-    const Surface* S[3] = {&A, &G, &B};
-    const double us[3] = {1.0, 0.5, 1.0}, vs[3] = {HUGE_VAL, -0.5, 0.7};
-    for (int i = 0; i < 3; ++i) {
-      ends[i].surface = S[i];
-      ends[i].u = us[i];
-      for (int j = 0; j < 3; ++j) ends[i].v[j] = vs[j];
-    }
-    ends[1].lambda = 2.0;  // along the guide's u, from A towards B
+    guide_ends(A, G, B, ends);
     const double knots[3] = {0.0, 0.5, 1.0};
     Surface piece[2];
     Surface* const pieces[2] = {&piece[0], &piece[1]};
@@ -447,4 +460,147 @@ TEST(Blend, RegressionHugeLambdaIsOverflowNotNonFiniteInput) {
   s.lambda = 0;
   EXPECT_EQ(make_ringed_blend(s, e, 2, 1.0, std::ldexp(1.0, 192), X), Status::numerical_overflow);
   EXPECT_EQ(X.u1, 42);
+}
+
+// Prop. 7 with the inputs' own circle parameterization (BlendCircles::
+// matched): f(t, v) Hermite-interpolates the Mobius maps between the
+// inputs' and the blend's circle parameters, so x(t, v) continues
+// x(phi(u), v) to order K for every v (point_jump, not only circle_jump),
+// on the same circles as the generator blend.
+TEST(RingedBlend, MatchedCirclesAreCKForEveryV) {
+  const Surface A = cone1(), B = cone2();
+  for (int K = 1; K <= 3; ++K) {
+    BlendEnd s, e;
+    s.surface = &A;
+    s.u = 1.0;
+    e.surface = &B;
+    e.u = 1.0;
+    const double vs[3] = {HUGE_VAL, -0.5, 0.7};
+    for (int j = 0; j < 3; ++j) s.v[j] = e.v[j] = vs[j];
+    e.phi[0] = 0.4;  // a non-trivial jet at the end
+    Surface G, M;
+    ASSERT_EQ(make_ringed_blend(s, e, K, 0.0, 1.0, G), Status::ok);
+    double bad = -1;
+    ASSERT_EQ(make_ringed_blend(s, e, K, 0.0, 1.0, M, &bad, nullptr, BlendCircles::matched),
+              Status::ok)
+        << K << " " << bad;
+    EXPECT_FALSE(M.f_constant);
+    EXPECT_EQ(M.f.alpha.deg, 2 * K + 1);
+    double jet_s[kMaxBlendOrder] = {}, jet_e[kMaxBlendOrder] = {};
+    blend_jet(s, 0, K, jet_s);
+    blend_jet(e, 1, K, jet_e);
+    struct Join {
+      const Surface* S;
+      double u;
+      const double* jet;
+      double t;
+    } joins[2] = {{&A, 1.0, jet_s, 0.0}, {&B, 1.0, jet_e, 1.0}};
+    for (const Join& J : joins) {
+      ContinuityReport R, RG;
+      ASSERT_EQ(continuity_report(*J.S, J.u, J.jet, M, J.t, K, nullptr, 64, R), Status::ok);
+      ASSERT_EQ(continuity_report(*J.S, J.u, J.jet, G, J.t, K, nullptr, 64, RG), Status::ok);
+      EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+      EXPECT_LE(R.max_normal_angle, 1e-9);
+      for (int l = 0; l <= K; ++l) {
+        EXPECT_LE(R.circle_jump[l], 1e-9) << "K " << K << " l " << l;
+        EXPECT_LE(R.point_jump[l], 1e-9 * std::max(R.point_scale_l[l], R.point_scale))
+            << "K " << K << " l " << l;
+      }
+      // The generator blend is C^K only in its circles: away from v[0] its
+      // parameterization jumps at order 1 already.
+      EXPECT_GT(RG.point_jump[1], 1e-3 * std::max(RG.point_scale_l[1], RG.point_scale));
+      // Order K+1 is generically not continuous.
+      if (K < kMaxBlendOrder) {
+        ContinuityReport H;
+        ASSERT_EQ(continuity_report(*J.S, J.u, J.jet, M, J.t, K + 1, nullptr, 16, H),
+                  Status::ok);
+        EXPECT_GT(H.point_jump[K + 1], 1e-6 * std::max(H.point_scale_l[K + 1], H.point_scale));
+      }
+    }
+    // Same surface: every point of M lies on G's circle at the same t.
+    for (double t : {0.0, 0.2, 0.5, 0.8, 1.0})
+      for (double v : {-4.0, -1.0, 0.0, 0.3, 2.0}) {
+        double x[3];
+        EvalOut o;
+        o.point = x;
+        ASSERT_EQ(M.eval(t, v, o), Status::ok);
+        Vec3d c, nrm;
+        double r2;
+        ASSERT_EQ(G.circle(t, c, nrm, r2), Status::ok);
+        const Vec3d X(x[0], x[1], x[2]);
+        EXPECT_LE(std::abs((X - c).squaredNorm() - r2), 1e-11 * r2) << t << " " << v;
+        EXPECT_LE(std::abs((X - c).dot(nrm)), 1e-11 * std::sqrt(r2)) << t << " " << v;
+      }
+  }
+}
+
+// B reparameterized by v -> -v and its points chosen at the mirrored
+// parameters: the same points, so the same generator blend, but B's
+// parameter now runs the circles in the opposite sense relative to the
+// blend's: no Mobius family joins the two end maps without degenerating,
+// which is reported.
+TEST(RingedBlend, MatchedCirclesOppositeSensesReported) {
+  const Surface A = cone1();
+  Surface B = cone2();
+  Mobius flip;
+  flip.alpha = MobiusPoly(-1.0);
+  Surface Bf;
+  ASSERT_EQ(make_prrs(B.curve[0], B.curve[1], B.curve[2], &flip, B.u0, B.u1, Bf), Status::ok);
+  BlendEnd s, e;
+  s.surface = &A;
+  s.u = 1.0;
+  e.surface = &Bf;
+  e.u = 1.0;
+  const double vs[3] = {HUGE_VAL, -0.5, 0.5};
+  for (int j = 0; j < 3; ++j) {
+    s.v[j] = vs[j];
+    e.v[j] = -vs[j];
+  }
+  Surface X;
+  X.u0 = -7;
+  double bad = -1;
+  EXPECT_EQ(make_ringed_blend(s, e, 1, 0.0, 1.0, X, &bad, nullptr, BlendCircles::matched),
+            Status::degenerate_circle_parameter);
+  EXPECT_EQ(bad, 1.0);
+  EXPECT_EQ(X.u0, -7);  // untouched
+  EXPECT_EQ(make_ringed_blend(s, e, 1, 0.0, 1.0, X), Status::ok);
+  // With B's own parameterization the same points are matched.
+  BlendEnd e2 = e;
+  e2.surface = &B;
+  for (int j = 0; j < 3; ++j) e2.v[j] = vs[j];
+  EXPECT_EQ(make_ringed_blend(s, e2, 1, 0.0, 1.0, X, &bad, nullptr, BlendCircles::matched),
+            Status::ok);
+  EXPECT_EQ(make_ringed_blend(s, e, 1, 0.0, 1.0, X, &bad, nullptr, BlendCircles(7)),
+            Status::invalid_argument);
+}
+
+// Matched spline blends: every piece continues its neighbours' and the
+// guide's parameterization to order K for every v.
+TEST(RingedBlend, MatchedSplineThroughAGuideCircle) {
+  const Surface A = cone1(), B = cone2(), Gd = guide_cylinder();
+  for (int K = 1; K <= 2; ++K) {
+    BlendEnd ends[3];
+    guide_ends(A, Gd, B, ends);
+    const double knots[3] = {0.0, 0.5, 1.0};
+    Surface piece[2];
+    Surface* const pieces[2] = {&piece[0], &piece[1]};
+    int bad_piece = -1;
+    double bad_u = -1;
+    ASSERT_EQ(make_ringed_blend_spline(ends, 3, K, knots, pieces, &bad_piece, &bad_u,
+                                       BlendCircles::matched),
+              Status::ok)
+        << bad_piece << " " << bad_u;
+    ContinuityReport R;
+    ASSERT_EQ(continuity_report(piece[0], 0.5, 1.0, piece[1], 0.5, K, nullptr, 32, R),
+              Status::ok);
+    for (int l = 0; l <= K; ++l)
+      EXPECT_LE(R.point_jump[l], 1e-9 * std::max(R.point_scale_l[l], R.point_scale)) << l;
+    double jet[kMaxBlendOrder] = {2.0};
+    for (int p = 0; p < 2; ++p) {
+      ASSERT_EQ(continuity_report(Gd, 0.5, jet, piece[p], 0.5, K, nullptr, 32, R), Status::ok);
+      for (int l = 0; l <= K; ++l)
+        EXPECT_LE(R.point_jump[l], 1e-9 * std::max(R.point_scale_l[l], R.point_scale))
+            << p << " " << l;
+    }
+  }
 }

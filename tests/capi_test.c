@@ -2243,6 +2243,18 @@ static cyc_surface* guide_cylinder(cyc_context* ctx) {
   return S;
 }
 
+/* The ends of a spline blend from s through the guide's waist circle (u =
+ * 1/2, lambda 2: from a towards b) to e. */
+static void guide_ends(const cyc_blend_end* s, const cyc_surface* guide, const cyc_blend_end* e,
+                       cyc_blend_end ends[3]) {
+  ends[0] = *s;
+  ends[1] = *s;
+  ends[1].surface = guide;
+  ends[1].u = 0.5;
+  ends[1].lambda = 2.0;
+  ends[2] = *e;
+}
+
 /* Two-piece ringed blend from cone a through the guide's circle to cone b:
  * the pieces share the circle at t = 1/2 and join C^1 there; errors leave
  * pieces[] untouched. */
@@ -2253,12 +2265,7 @@ static void test_spline_blend(cyc_context* ctx, const cyc_blend_end* s, const cy
   cyc_continuity R;
   const double knots[3] = {0.0, 0.5, 1.0}, bad_knots[3] = {0.0, 0.5, 0.25};
   if (!guide) return;
-  ends[0] = *s;
-  ends[1] = *s;
-  ends[1].surface = guide;
-  ends[1].u = 0.5;
-  ends[1].lambda = 2.0;
-  ends[2] = *e;
+  guide_ends(s, guide, e, ends);
   CHECK_STATUS(ctx, cyc_blend_ringed_spline(ctx, ends, 1, 1, knots, pieces),
                CYC_E_INVALID_ARGUMENT);
   CHECK_STATUS(ctx, cyc_blend_ringed_spline(ctx, ends, 3, 1, bad_knots, pieces), CYC_E_BAD_DOMAIN);
@@ -2289,6 +2296,54 @@ static void test_spline_blend(cyc_context* ctx, const cyc_blend_end* s, const cy
   cyc_surface_destroy(ctx, pieces[0]);
   cyc_surface_destroy(ctx, pieces[1]);
   cyc_surface_destroy(ctx, guide);
+}
+
+/* Matched circle parameterizations (Prop. 7 with the inputs' own f): for
+ * every v the blend continues the cones' parameterizations to order K
+ * (point_jump, not only circle_jump); v triples in opposite cyclic orders
+ * at the two ends admit no Mobius family (reported, nothing written). */
+static void test_matched_blend(cyc_context* ctx, const cyc_blend_end* s, const cyc_blend_end* e) {
+  cyc_surface *m = SURF_SENT, *g = guide_cylinder(ctx);
+  cyc_surface* pieces[2] = {SURF_SENT, SURF_SENT};
+  cyc_blend_end ends[3], mirrored = *e;
+  cyc_continuity R;
+  const double knots[3] = {0.0, 0.5, 1.0};
+  int l;
+  CHECK_STATUS(ctx, cyc_blend_ringed_matched(ctx, s, e, 0, 0.0, 1.0, &m), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed_matched(ctx, s, NULL, 1, 0.0, 1.0, &m), CYC_E_NULL_ARGUMENT);
+  mirrored.v[1] = e->v[2];
+  mirrored.v[2] = e->v[1];
+  CHECK_STATUS(ctx, cyc_blend_ringed_matched(ctx, s, &mirrored, 1, 0.0, 1.0, &m),
+               CYC_E_DEGENERATE_CIRCLE_PARAMETER);
+  CHECK(strstr(cyc_context_last_error(ctx), "opposite senses") != NULL);
+  CHECK(m == SURF_SENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed_matched(ctx, s, e, 2, 0.0, 1.0, &m), CYC_OK);
+  if (m != SURF_SENT && m) {
+    CHECK_STATUS(ctx, cyc_continuity_report(ctx, s->surface, 1.0, 1.0, m, 0.0, 2, NULL, 32, &R),
+                 CYC_OK);
+    for (l = 0; l <= 2; ++l)
+      CHECK(R.point_jump[l] <= 1e-9 * fmax(R.point_scale_l[l], R.point_scale));
+    CHECK_STATUS(ctx, cyc_continuity_report(ctx, e->surface, 1.0, -1.0, m, 1.0, 2, NULL, 32, &R),
+                 CYC_OK);
+    for (l = 0; l <= 2; ++l)
+      CHECK(R.point_jump[l] <= 1e-9 * fmax(R.point_scale_l[l], R.point_scale));
+    cyc_surface_destroy(ctx, m);
+  }
+  if (!g) return;
+  guide_ends(s, g, e, ends);
+  CHECK_STATUS(ctx, cyc_blend_ringed_spline_matched(ctx, ends, 1, 1, knots, pieces),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed_spline_matched(ctx, ends, 3, 1, knots, pieces), CYC_OK);
+  if (pieces[0] != SURF_SENT && pieces[1] != SURF_SENT) {
+    CHECK_STATUS(ctx, cyc_continuity_report(ctx, pieces[0], 0.5, 1.0, pieces[1], 0.5, 1, NULL, 16,
+                                            &R),
+                 CYC_OK);
+    for (l = 0; l <= 1; ++l)
+      CHECK(R.point_jump[l] <= 1e-9 * fmax(R.point_scale_l[l], R.point_scale));
+    cyc_surface_destroy(ctx, pieces[0]);
+    cyc_surface_destroy(ctx, pieces[1]);
+  }
+  cyc_surface_destroy(ctx, g);
 }
 
 static void test_blends(cyc_context* ctx) {
@@ -2341,6 +2396,7 @@ static void test_blends(cyc_context* ctx) {
   CHECK(c == SURF_SENT);
   CHECK_STATUS(ctx, cyc_blend_canal(ctx, &s, &e, 2, 0.0, 1.0, &c), CYC_OK);
   test_spline_blend(ctx, &s, &e);
+  test_matched_blend(ctx, &s, &e);
 
   /* Reports: NULLs and bad K leave *out untouched. */
   memset(&R, 0x5a, sizeof R);

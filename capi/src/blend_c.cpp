@@ -33,10 +33,23 @@ BlendEnd capi::end_of(const cyc_blend_end& e) {
 
 namespace {
 
+// The matched blends' own reason for degenerate_circle_parameter (piece:
+// the spline piece, or -1 for a single blend).
+Outcome unmatched(const char* fn, int piece, double bad_u) {
+  char where[32] = "";
+  if (piece >= 0) std::snprintf(where, sizeof where, "piece %d: ", piece);
+  return fail(CYC_E_DEGENERATE_CIRCLE_PARAMETER,
+              "%s: %sno Mobius family joins the ends' circle parameterizations (at u = "
+              "%.17g): the inputs' v run in opposite senses relative to the blend's circles, "
+              "or the interpolated map degenerates there; reparameterize one input by "
+              "v -> -v, or use the generator parameterization (cyc_blend_ringed)",
+              fn, where, bad_u);
+}
+
 template <class Make>
 Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
               const cyc_blend_end* end, int K, int lo, double t0, double t1, cyc_surface** out,
-              Make&& make) {
+              Make&& make, bool matched = false) {
   REQUIRE(start);
   REQUIRE(end);
   REQUIRE(start->surface);
@@ -46,6 +59,7 @@ Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
   Surface S;
   double bad_u = t0;
   const Status s = make(end_of(*start), end_of(*end), K, t0, t1, S, &bad_u);
+  if (matched && s == Status::degenerate_circle_parameter) return unmatched(fn, -1, bad_u);
   if (s != Status::ok) return located(s) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
   return emit(fn, ctx, out, S);
 }
@@ -53,7 +67,8 @@ Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
 // n-1 handles, built all or nothing by the core's spline blend.
 template <class Make>
 Outcome blend_spline(const char* fn, cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
-                     int lo, const double* knots, cyc_surface** pieces, Make&& make) {
+                     int lo, const double* knots, cyc_surface** pieces, Make&& make,
+                     bool matched = false) {
   REQUIRE(ends);
   REQUIRE(knots);
   REQUIRE(pieces);
@@ -81,6 +96,8 @@ Outcome blend_spline(const char* fn, cyc_context* ctx, const cyc_blend_end* ends
   const Status st = make(be, n, K, knots, s, &bad_piece, &bad_u);
   if (st != Status::ok) {
     release_all();
+    if (matched && st == Status::degenerate_circle_parameter)
+      return unmatched(fn, bad_piece, bad_u);
     if (located(st))
       return fail(int(st), "%s: piece %d: %s (at u = %.17g)", fn, bad_piece, explain(st), bad_u);
     return from_core(fn, st);
@@ -117,6 +134,20 @@ int cyc_blend_ringed_spline(cyc_context* ctx, const cyc_blend_end* ends, int n, 
   });
 }
 
+int cyc_blend_ringed_spline_matched(cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
+                                    const double* knots, cyc_surface** pieces) {
+  const char* fn = "cyc_blend_ringed_spline_matched";
+  return run(ctx, fn, [&] {
+    return blend_spline(
+        fn, ctx, ends, n, K, 1, knots, pieces,
+        [](const BlendEnd* e, int m, int k, const double* t, Surface* const* p, int* bp,
+           double* bu) {
+          return make_ringed_blend_spline(e, m, k, t, p, bp, bu, BlendCircles::matched);
+        },
+        true);
+  });
+}
+
 int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surface, double u,
                               double v, int K, double* out) {
   const char* fn = "cyc_surface_derivatives_u";
@@ -149,6 +180,21 @@ int cyc_blend_ringed(cyc_context* ctx, const cyc_blend_end* start, const cyc_ble
     return blend(fn, ctx, start, end, K, 1, t0, t1, out,
                  [](const BlendEnd& a, const BlendEnd& b, int k, double s0, double s1,
                     Surface& S, double* bad) { return make_ringed_blend(a, b, k, s0, s1, S, bad); });
+  });
+}
+
+int cyc_blend_ringed_matched(cyc_context* ctx, const cyc_blend_end* start,
+                             const cyc_blend_end* end, int K, double t0, double t1,
+                             cyc_surface** out) {
+  const char* fn = "cyc_blend_ringed_matched";
+  return run(ctx, fn, [&] {
+    return blend(
+        fn, ctx, start, end, K, 1, t0, t1, out,
+        [](const BlendEnd& a, const BlendEnd& b, int k, double s0, double s1, Surface& S,
+           double* bad) {
+          return make_ringed_blend(a, b, k, s0, s1, S, bad, nullptr, BlendCircles::matched);
+        },
+        true);
   });
 }
 

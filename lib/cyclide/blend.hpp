@@ -98,10 +98,30 @@ double blend_lambda(const BlendEnd& e, int index);
 Status make_canal_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
                         double t1, Surface& out, double* bad_u = nullptr,
                         RationalCurve* curves = nullptr);
-// Ringed blend (§9.2): K >= 1, three Hermite curves, then make_prrs (f = v).
+// How a ringed blend parameterizes its circles.
+//  generator: f = v (the paper's PRRS): the generator p1 (the points v[0]
+//    of the ends) at v = infinity. The blend is C^K to the inputs in the
+//    circle family and at the generator point; elsewhere the circles'
+//    parameterizations differ from the inputs' (G^K, not C^K, for v != v[0]).
+//  matched: f(t, v) = (alpha(t) v + beta(t)) / (gamma(t) v + delta(t)) with
+//    alpha..delta of degree 2K+1 Hermite-interpolating, at each end, the
+//    jet of the Mobius map that carries the input's circle parameter to the
+//    blend's (fixed by the three points v[0..2]). Then for every v the
+//    curve t -> x(t, v) continues the input's u -> x(phi(u), v) to order K:
+//    the parameterizations join C^K (Prop. 7 with the inputs' own f), as
+//    tensor-product export and texture coordinates need. The geometry is the
+//    same surface as with `generator`. When the two inputs run their circles
+//    in opposite senses along the blend (the two maps have determinants of
+//    opposite sign) no Mobius family joins them without degenerating:
+//    degenerate_circle_parameter (reparameterize one input by v -> -v).
+enum class BlendCircles { generator = 0, matched = 1 };
+
+// Ringed blend (§9.2): K >= 1, three Hermite curves, then make_prrs with the
+// circle parameterization `circles` (f = v by default).
 Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
                          double t1, Surface& out, double* bad_u = nullptr,
-                         RationalCurve* curves = nullptr);
+                         RationalCurve* curves = nullptr,
+                         BlendCircles circles = BlendCircles::generator);
 
 // Piecewise blends (issue 4 item 2: spline curves where one piece is not
 // enough): ends[0], ..., ends[n-1] (2 <= n <= kMaxSplineKnots) are circles
@@ -121,7 +141,8 @@ Status make_canal_blend_spline(const BlendEnd* ends, int n, int K, const double*
                                double* bad_u = nullptr);
 Status make_ringed_blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
                                 Surface* const* pieces, int* bad_piece = nullptr,
-                                double* bad_u = nullptr);
+                                double* bad_u = nullptr,
+                                BlendCircles circles = BlendCircles::generator);
 
 // The join of surface A at u = uA and surface B at u = uB along a common
 // circle, at sample points x_A(uA, vA[i]); the corresponding point of B is

@@ -178,14 +178,161 @@ Status make_canal_blend(const BlendEnd& start, const BlendEnd& end, int K, doubl
   return Status::ok;
 }
 
+namespace {
+
+// The circle parameter of a point X of the circle of frame F (f = v), as
+// the homogeneous pair [W : G] of the quaternion q = W + G a that rotates
+// the generator p to X (eq. (13): W / G = |a| cot(theta / 2)). With d, e the
+// generator and X relative to o, projected on the circle's plane, and rho
+// the radius (|e| = rho: X lies on the circle),
+//   rho^2 cos theta = d.e,   |a| rho^2 sin theta = a.(d x e),
+// and cot(theta/2) = (1 + cos theta)/sin theta = sin theta/(1 - cos theta):
+//   [W : G] = [|a|^2 (rho^2 + d.e) : a.(d x e)] = [a.(d x e) : rho^2 - d.e],
+// rational in the frame, so it carries series. The first form is used on
+// the generator's half of the circle (d.e >= 0), the second on the other
+// half, so that neither is 0/0.
+template <int N>
+void circle_parameter(const CircleFrame<Taylor<double, N>>& F,
+                      const Vec3<Taylor<double, N>>& X, Taylor<double, N> (&wg)[2]) {
+  using T = Taylor<double, N>;
+  const T aa = F.a.dot(F.a);
+  const Vec3<T> d0 = F.p - F.o, e0 = X - F.o;
+  const Vec3<T> d = d0 - (F.a.dot(d0) / aa) * F.a;
+  const Vec3<T> e = e0 - (F.a.dot(e0) / aa) * F.a;
+  const T rho2 = d.dot(d), de = d.dot(e), sine = F.a.dot(d.cross(e));
+  if (de.c[0] >= 0) {
+    wg[0] = aa * (rho2 + de);
+    wg[1] = sine;
+  } else {
+    wg[0] = sine;
+    wg[1] = rho2 - de;
+  }
+}
+
+// The Mobius matrix M = [[a, b], [c, d]] (x -> (a x + b) / (c x + d) on
+// homogeneous x) that takes the points z[0], z[1], z[2] to 0, infinity, 1:
+// its rows vanish on z[0] and z[1], scaled so that z[2] goes to 1.
+template <class T>
+void to_zero_infinity_one(const T (&z)[3][2], T (&M)[2][2]) {
+  const T k0 = z[1][1] * z[2][0] - z[1][0] * z[2][1];
+  const T k1 = z[0][1] * z[2][0] - z[0][0] * z[2][1];
+  M[0][0] = k0 * z[0][1];
+  M[0][1] = -(k0 * z[0][0]);
+  M[1][0] = k1 * z[1][1];
+  M[1][1] = -(k1 * z[1][0]);
+}
+
+// The jet at t = te (end `index` of the blend S, built with f = v from the
+// curves p) of the Mobius map m(t) that carries the input's circle
+// parameter v to the blend's: m(v_j) = w_j(t), j = 0..2, where v_j = e.v[j]
+// and w_j(t) is the blend's parameter of p_j(t), which continues
+// x(phi(t), v_j) to order K (blend_curves). Both parameterize the same
+// circle to order K, so m(t, v) matches them for every v, not only the
+// three. m = M_w^-1 M_v with M_z the map taking the z_j to 0, infinity, 1
+// (M_w^-1 as the adjugate: homogeneous, no division).
+// jet[k][l] = l-th t-derivative of alpha, beta, gamma, delta (k = 0..3).
+template <int N>
+Status end_mobius(const Surface& S, const RationalCurve* p, const BlendEnd& e, double te,
+                  double (&jet)[4][kMaxBlendOrder + 1]) {
+  using T = Taylor<double, N>;
+  CircleFrame<T> F;
+  if (Status st = S.frame<N>(te, F); st != Status::ok) return st;
+  T w[3][2], v[3][2];
+  for (int j = 0; j < 3; ++j) {
+    circle_parameter<N>(F, p[j].taylor<N>(te), w[j]);
+    // v_j as the homogeneous constant (v, 1), or (1, 1/v) for |v| > 1
+    // (v = +-infinity is the input's generator).
+    const bool small = std::abs(e.v[j]) <= 1.0;
+    v[j][0] = T(small ? e.v[j] : 1.0);
+    v[j][1] = T(small ? 1.0 : 1.0 / e.v[j]);
+  }
+  T Mw[2][2], Mv[2][2];
+  to_zero_infinity_one(w, Mw);
+  to_zero_infinity_one(v, Mv);
+  const T adj[2][2] = {{Mw[1][1], -Mw[0][1]}, {-Mw[1][0], Mw[0][0]}};
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 2; ++c) {
+      const T m = adj[r][0] * Mv[0][c] + adj[r][1] * Mv[1][c];
+      for (int l = 0; l <= kMaxBlendOrder; ++l) jet[2 * r + c][l] = l <= N ? deriv(m, l) : 0.0;
+    }
+  return Status::ok;
+}
+
+// f(t, v) of a matched ringed blend (BlendCircles::matched): the end jets of
+// m, each scaled to |det| = 1 at its end (m is homogeneous) with signs that
+// make the two end matrices point the same way, Hermite-interpolated
+// coefficient by coefficient (degree 2K+1, power form for Mobius). The
+// determinant's sign is the sense in which the input runs its circles
+// relative to the blend: a continuous family of Mobius maps cannot change
+// it, so different signs are degenerate_circle_parameter (at t1). Whether
+// the interpolant stays regular inside is checked by make_prrs' domain scan.
+Status matched_circles(const Surface& S, const RationalCurve* p, const BlendEnd& start,
+                       const BlendEnd& end, int K, double t0, double t1, Mobius& f,
+                       double* bad_u) {
+  const BlendEnd* ends[2] = {&start, &end};
+  const double te[2] = {t0, t1};
+  double jet[2][4][kMaxBlendOrder + 1];
+  double det[2];
+  for (int e = 0; e < 2; ++e) {
+    const Status st = with_order(K, [&](auto n) -> Status {
+      return end_mobius<decltype(n)::value>(S, p, *ends[e], te[e], jet[e]);
+    });
+    if (st != Status::ok) {
+      if (bad_u) *bad_u = te[e];
+      return st;
+    }
+    det[e] = jet[e][0][0] * jet[e][3][0] - jet[e][1][0] * jet[e][2][0];
+    if (!std::isfinite(det[e]) || !(std::abs(det[e]) > 0)) {
+      if (bad_u) *bad_u = te[e];
+      return Status::degenerate_circle_parameter;
+    }
+  }
+  if ((det[0] > 0) != (det[1] > 0)) {
+    if (bad_u) *bad_u = t1;
+    return Status::degenerate_circle_parameter;
+  }
+  double dot = 0;
+  for (int k = 0; k < 4; ++k) dot += jet[0][k][0] * jet[1][k][0];
+  const double scale[2] = {1.0 / std::sqrt(std::abs(det[0])),
+                           (dot < 0 ? -1.0 : 1.0) / std::sqrt(std::abs(det[1]))};
+  const int n = 2 * K + 1;
+  double coeff[4][kMaxMobiusDegree + 1];
+  for (int k = 0; k < 4; ++k) {
+    double ends_jet[2][kMaxBlendOrder + 1];
+    for (int e = 0; e < 2; ++e)
+      for (int l = 0; l <= K; ++l) ends_jet[e][l] = scale[e] * jet[e][k][l];
+    double b[kMaxCurveDegree + 1];
+    hermite_bernstein(K, t1 - t0, ends_jet[0], ends_jet[1], b);
+    MobiusPoly poly;
+    if (!from_bernstein(b, n, t0, t1, poly)) return Status::degree_too_high;
+    for (int i = 0; i <= n; ++i) coeff[k][i] = i <= poly.deg ? poly.c[i] : 0.0;
+  }
+  const Status st = make_mobius(n, coeff[0], coeff[1], coeff[2], coeff[3], f);
+  return st == Status::not_finite ? Status::numerical_overflow : st;
+}
+
+}  // namespace
+
 Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, double t0,
-                         double t1, Surface& out, double* bad_u, RationalCurve* curves) {
+                         double t1, Surface& out, double* bad_u, RationalCurve* curves,
+                         BlendCircles circles) {
   if (K < 1) return Status::invalid_argument;  // §9.2: K >= 1
+  if (circles != BlendCircles::generator && circles != BlendCircles::matched)
+    return Status::invalid_argument;
   RationalCurve p[3];
   if (Status st = blend_curves(start, end, K, t0, t1, 3, p); st != Status::ok) return st;
   Surface S;
   if (Status st = make_prrs(p[0], p[1], p[2], nullptr, t0, t1, S, bad_u); st != Status::ok)
     return st == Status::not_finite ? Status::numerical_overflow : st;
+  if (circles == BlendCircles::matched) {
+    // The same circles, reparameterized by f(t, v) (the surface with f = v
+    // provides the frames the end maps are measured in).
+    Mobius f;
+    if (Status st = matched_circles(S, p, start, end, K, t0, t1, f, bad_u); st != Status::ok)
+      return st;
+    if (Status st = make_prrs(p[0], p[1], p[2], &f, t0, t1, S, bad_u); st != Status::ok)
+      return st == Status::not_finite ? Status::numerical_overflow : st;
+  }
   out = S;
   if (curves)
     for (int j = 0; j < 3; ++j) curves[j] = p[j];
@@ -235,11 +382,12 @@ Status make_canal_blend_spline(const BlendEnd* ends, int n, int K, const double*
 }
 
 Status make_ringed_blend_spline(const BlendEnd* ends, int n, int K, const double* knots,
-                                Surface* const* pieces, int* bad_piece, double* bad_u) {
+                                Surface* const* pieces, int* bad_piece, double* bad_u,
+                                BlendCircles circles) {
   return blend_spline(ends, n, K, knots, pieces, bad_piece, bad_u,
-                      [](const BlendEnd& a, const BlendEnd& b, int k, double t0, double t1,
-                         Surface& S, double* bad) {
-                        return make_ringed_blend(a, b, k, t0, t1, S, bad);
+                      [circles](const BlendEnd& a, const BlendEnd& b, int k, double t0,
+                                double t1, Surface& S, double* bad) {
+                        return make_ringed_blend(a, b, k, t0, t1, S, bad, nullptr, circles);
                       });
 }
 

@@ -556,6 +556,21 @@ CYC_API int cyc_blend_ringed(cyc_context* ctx, const cyc_blend_end* start,
                              const cyc_blend_end* end, int K, double t0, double t1,
                              cyc_surface** out);
 
+/** Ringed blend whose circle parameterization continues the inputs' (Prop. 7
+ *  with the inputs' own f): the same surface as cyc_blend_ringed, with
+ *  f(t, v) = (alpha v + beta)/(gamma v + delta), alpha..delta of degree 2K+1
+ *  Hermite-interpolating at each end the Mobius map that carries the input's
+ *  circle parameter to the blend's (fixed by the points v[0..2]). For every
+ *  v, t -> x(t, v) then continues u -> x_input(phi(u), v) to order K (C^K
+ *  parameterizations, not only C^K circles; check with cyc_continuity_report's
+ *  point_jump). CYC_E_DEGENERATE_CIRCLE_PARAMETER when no such family exists:
+ *  the two inputs' v run in opposite senses relative to the blend's circles
+ *  (reparameterize one by v -> -v), or the interpolated map degenerates
+ *  inside; otherwise the statuses of cyc_blend_ringed. */
+CYC_API int cyc_blend_ringed_matched(cyc_context* ctx, const cyc_blend_end* start,
+                                     const cyc_blend_end* end, int K, double t0, double t1,
+                                     cyc_surface** out);
+
 /** Piecewise blends (spline Hermite curves where one piece is not enough):
  *  the blend passes through the circles ends[0], ..., ends[n-1] in order
  *  (2 <= n <= CYC_MAX_SPLINE_KNOTS; the interior ones on guide surfaces,
@@ -572,6 +587,11 @@ CYC_API int cyc_blend_canal_spline(cyc_context* ctx, const cyc_blend_end* ends, 
                                    const double* knots, cyc_surface** pieces);
 CYC_API int cyc_blend_ringed_spline(cyc_context* ctx, const cyc_blend_end* ends, int n, int K,
                                     const double* knots, cyc_surface** pieces);
+/** cyc_blend_ringed_spline with matched circle parameterizations
+ *  (cyc_blend_ringed_matched) in every piece: the pieces continue each
+ *  other's and the guides' parameterizations to order K for every v. */
+CYC_API int cyc_blend_ringed_spline_matched(cyc_context* ctx, const cyc_blend_end* ends, int n,
+                                            int K, const double* knots, cyc_surface** pieces);
 
 /** Continuity of the join of surface a at u = ua and surface b at u = ub
  *  along a common circle, at the points x_a(ua, va[i]) and their closest
