@@ -551,6 +551,47 @@ static void blend_demos(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_surface_destroy(ctx, b);
 }
 
+/* Seed 001 §4, Example 4.1: the ringed-surface blend from the Hermite data
+ * (37) of R1(1) and R2(0), (d, n3, rho) by Ferguson cubics and (n1, n2) by
+ * the degree-6 planar P-curve (43), and the P-biarc (47) at tau = 1/2. */
+static void pcurve_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  cyc_ringed_jet a, b;
+  cyc_pcurve_blend_options o;
+  cyc_surface* pieces[2] = {NULL, NULL};
+  double x[3];
+  int count = 0, k;
+  const double d0[3] = {-4, -3, 1}, dd0[3] = {2, 4, 3}, n0[3] = {1, 1, 1}, dn[3] = {0, 1, 1};
+  const double d1[3] = {0, 0, 0}, dd1[3] = {3, 1, 1}, n1[3] = {4, 0, 0};
+  memcpy(a.d, d0, sizeof d0);
+  memcpy(a.dd, dd0, sizeof dd0);
+  memcpy(a.n, n0, sizeof n0);
+  memcpy(a.dn, dn, sizeof dn);
+  a.rho = 1.25;
+  a.drho = 0.5;
+  memcpy(b.d, d1, sizeof d1);
+  memcpy(b.dd, dd1, sizeof dd1);
+  memcpy(b.n, n1, sizeof n1);
+  memcpy(b.dn, dn, sizeof dn);
+  b.rho = 2;
+  b.drho = 1;
+  fprintf(report, "\nRinged surfaces (d, n, rho) (seed 001 sec. 4): Example 4.1's blend\n");
+  cyc_pcurve_blend_options_init(&o);
+  check(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count), "cyc_blend_ringed_pcurve");
+  check(ctx, cyc_surface_eval(ctx, pieces[0], 0.5, 0.0, x, NULL, NULL, NULL), "eval");
+  fprintf(report, "  degree-6 P-curve (43): s(1/2, 0) = (%.9f, %.9f, %.9f) "
+                  "(transcription: -2.600946726, 0.3632476150, 0.75)\n", x[0], x[1], x[2]);
+  write_surface(ctx, pieces[0], dir, "ringed_ex41_pcurve", NULL, report);
+  cyc_surface_destroy(ctx, pieces[0]);
+  o.tau = 0.5;
+  check(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count), "cyc_blend_ringed_pcurve");
+  fprintf(report, "  P-biarc (47), tau = 1/2: %d pieces of degree 7 over quartic sigma\n", count);
+  for (k = 0; k < count; ++k) {
+    write_surface(ctx, pieces[k], dir, k ? "ringed_ex41_biarc_2" : "ringed_ex41_biarc_1", NULL,
+                  report);
+    cyc_surface_destroy(ctx, pieces[k]);
+  }
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -641,6 +682,7 @@ int main(int argc, char** argv) {
   cyc_curve_destroy(ctx, l1);
   darboux_demos(ctx, dir, report);
   blend_demos(ctx, dir, report);
+  pcurve_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

@@ -336,6 +336,7 @@ static const struct {
     {CYC_E_EMPTY_REAL_LOCUS, "CYC_E_EMPTY_REAL_LOCUS"},
     {CYC_E_TOO_FEW_LINES, "CYC_E_TOO_FEW_LINES"},
     {CYC_E_NO_NORMAL_FORM, "CYC_E_NO_NORMAL_FORM"},
+    {CYC_E_NOT_PYTHAGOREAN, "CYC_E_NOT_PYTHAGOREAN"},
     {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
     {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
     {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
@@ -346,7 +347,7 @@ static const struct {
 
 static void test_versions_and_names(void) {
   size_t i, j;
-  const int unknown[] = {-1, 6, 99, 115, 199, 201, 302, 402, 12345};
+  const int unknown[] = {-1, 6, 99, 116, 199, 201, 302, 402, 12345};
   CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
   CHECK(cyc_version_string() != NULL);
   CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
@@ -362,10 +363,10 @@ static void test_versions_and_names(void) {
   CHECK(CYC_E_PARALLEL_LINES == 107 && CYC_E_NO_COMMON_NORMAL == 108 &&
         CYC_E_RANK_DEFICIENT == 109 && CYC_E_AT_INVERSION_CENTER == 110 &&
         CYC_E_NOT_PARABOLIC == 111 && CYC_E_EMPTY_REAL_LOCUS == 112 && CYC_E_TOO_FEW_LINES == 113 &&
-        CYC_E_NO_NORMAL_FORM == 114);
+        CYC_E_NO_NORMAL_FORM == 114 && CYC_E_NOT_PYTHAGOREAN == 115);
   CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
         CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
-  CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2);
+  CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2 && CYC_SURFACE_RINGED == 3);
   for (i = 0; i < NSTATUS; ++i) {
     const char* n = cyc_status_name(kStatusNames[i].code);
     CHECK(n != NULL && strcmp(n, kStatusNames[i].name) == 0);
@@ -2346,6 +2347,83 @@ static void test_matched_blend(cyc_context* ctx, const cyc_blend_end* s, const c
   cyc_surface_destroy(ctx, g);
 }
 
+/* Ringed surfaces (d, n, rho) of seed 001: a cylinder from (d, n, c), and
+ * the P-curve blend of Example 4.1 (the transcription's s(1/2, 0)). */
+static void test_ringed(cyc_context* ctx) {
+  const double O[3] = {0, 0, 0}, Z[3] = {0, 0, 1}, X1[3] = {1, 0, 0};
+  cyc_curve *d = NULL, *n = NULL, *c = NULL, *le = NULL, *zero = NULL;
+  cyc_surface *S = SURF_SENT, *pieces[2] = {SURF_SENT, SURF_SENT};
+  cyc_ringed_jet a, b, j;
+  cyc_pcurve_blend_options o;
+  double x[3];
+  int kind = 0, count = -1;
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, O, Z, &d), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, Z, &n), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_line(ctx, X1, Z, &c), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_line_element(ctx, O, Z, &le), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_point(ctx, O, &zero), CYC_OK);
+  CHECK_STATUS(ctx, cyc_ringed_create(ctx, d, le, c, NULL, 0, 1, &S), CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_ringed_create(ctx, d, zero, c, NULL, 0, 1, &S), CYC_E_DEPENDENT_PLANES);
+  CHECK_STATUS(ctx, cyc_ringed_create(ctx, d, n, NULL, NULL, 0, 1, &S), CYC_E_NULL_ARGUMENT);
+  CHECK(S == SURF_SENT);
+  CHECK_STATUS(ctx, cyc_ringed_create(ctx, d, n, c, NULL, 0, 1, &S), CYC_OK);
+  if (S != SURF_SENT && S) {
+    CHECK_STATUS(ctx, cyc_surface_kind(ctx, S, &kind), CYC_OK);
+    CHECK(kind == CYC_SURFACE_RINGED);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.5, 0.7, x, NULL, NULL, NULL), CYC_OK);
+    CHECK(fabs(hypot(x[0], x[1]) - 1) < 1e-14 && fabs(x[2] - 0.5) < 1e-14);
+    CHECK_STATUS(ctx, cyc_surface_ringed_jet(ctx, S, 0.5, &j), CYC_OK);
+    CHECK(fabs(j.rho - 1) < 1e-14 && fabs(j.d[2] - 0.5) < 1e-14 && fabs(j.dd[2] - 1) < 1e-14);
+    cyc_surface_destroy(ctx, S);
+  }
+  cyc_curve_destroy(ctx, d);
+  cyc_curve_destroy(ctx, n);
+  cyc_curve_destroy(ctx, c);
+  cyc_curve_destroy(ctx, le);
+  cyc_curve_destroy(ctx, zero);
+
+  memset(&a, 0, sizeof a);
+  a.d[0] = -4; a.d[1] = -3; a.d[2] = 1;
+  a.dd[0] = 2; a.dd[1] = 4; a.dd[2] = 3;
+  a.n[0] = 1; a.n[1] = 1; a.n[2] = 1;
+  a.dn[1] = 1; a.dn[2] = 1;
+  a.rho = 1.25; a.drho = 0.5;
+  memset(&b, 0, sizeof b);
+  b.dd[0] = 3; b.dd[1] = 1; b.dd[2] = 1;
+  b.n[0] = 4;
+  b.dn[1] = 1; b.dn[2] = 1;
+  b.rho = 2; b.drho = 1;
+  cyc_pcurve_blend_options_init(&o);
+  CHECK(o.sign == 1 && o.tau == 0 && o.v[2] == 1);
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, NULL, &o, pieces, &count), CYC_E_NULL_ARGUMENT);
+  o.sign = 0;
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count), CYC_E_INVALID_ARGUMENT);
+  o.sign = 1;
+  o.tau = 1.5;
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count), CYC_E_BAD_DOMAIN);
+  o.tau = 0;
+  o.v[0] = 4; o.v[1] = 0; o.v[2] = 0;  /* n parallel to v at b: no square root */
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count),
+               CYC_E_NOT_PYTHAGOREAN);
+  CHECK(pieces[0] == SURF_SENT && count == -1);
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, NULL, pieces, &count), CYC_OK);
+  CHECK(count == 1 && pieces[1] == SURF_SENT);
+  if (count == 1) {
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, pieces[0], 0.5, 0.0, x, NULL, NULL, NULL), CYC_OK);
+    CHECK(fabs(x[0] + 2.600946726) < 1e-9 && fabs(x[1] - 0.3632476150) < 1e-9 &&
+          fabs(x[2] - 0.75) < 1e-9);
+    cyc_surface_destroy(ctx, pieces[0]);
+  }
+  cyc_pcurve_blend_options_init(&o);
+  o.tau = 0.5;
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count), CYC_OK);
+  CHECK(count == 2);
+  if (count == 2) {
+    cyc_surface_destroy(ctx, pieces[0]);
+    cyc_surface_destroy(ctx, pieces[1]);
+  }
+}
+
 static void test_blends(cyc_context* ctx) {
   const double O[3] = {0, 0, 0}, A2[3] = {4, 0, 4};
   const double X[3] = {1, 0, 0}, Y[3] = {0, 1, 0}, Z[3] = {0, 0, 1}, MX[3] = {-1, 0, 0};
@@ -2450,6 +2528,7 @@ int main(void) {
     test_darboux_lines(ctx);
     test_classify(ctx);
     test_blends(ctx);
+    test_ringed(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

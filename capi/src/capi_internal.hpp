@@ -132,6 +132,9 @@ inline const char* explain(Status s) {
       return "the cyclide lacks the lines Props. 3/5 need (a double line, three skew lines)";
     case Status::no_normal_form:
       return "the input has no normal form of Props. 2/8/9 (lines or points coplanar)";
+    case Status::not_pythagorean:
+      return "the data admit no P-curve here (a norm is not the square of a polynomial, or "
+             "planar Hermite data vanish at an end)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -14,6 +14,10 @@ using namespace cyclide;
 
 // The frozen C numbers equal the core's.
 #define CYC_SAME(c, s) static_assert(int(c) == int(Status::s), #c)
+static_assert(CYC_SURFACE_PRCS == int(SurfaceKind::prcs) &&
+                  CYC_SURFACE_PRRS == int(SurfaceKind::prrs) &&
+                  CYC_SURFACE_RINGED == int(SurfaceKind::ringed),
+              "surface kinds");
 CYC_SAME(CYC_OK, ok);
 CYC_SAME(CYC_E_NULL_ARGUMENT, null_argument);
 CYC_SAME(CYC_E_INVALID_ARGUMENT, invalid_argument);
@@ -35,6 +39,7 @@ CYC_SAME(CYC_E_NOT_PARABOLIC, not_parabolic);
 CYC_SAME(CYC_E_EMPTY_REAL_LOCUS, empty_real_locus);
 CYC_SAME(CYC_E_TOO_FEW_LINES, too_few_lines);
 CYC_SAME(CYC_E_NO_NORMAL_FORM, no_normal_form);
+CYC_SAME(CYC_E_NOT_PYTHAGOREAN, not_pythagorean);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
@@ -47,6 +52,39 @@ static_assert(CYC_MAX_MOBIUS_DEGREE == kMaxMobiusDegree, "bound");
 using namespace cyclide::capi;
 
 // ------------------------------------------------------------ versions
+
+namespace {
+
+Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
+  if (!f) return ok();
+  if (Status s = make_mobius(f->degree, f->alpha, f->beta, f->gamma, f->delta, m);
+      s != Status::ok)
+    return fail(int(s), "%s: circle parameter f: %s", fn, explain(s));
+  return ok();
+}
+
+// cyc_prrs_create and cyc_ringed_create: three curves, a Mobius f, a domain.
+template <class Make>
+Outcome three_curve_surface(const char* fn, cyc_context* ctx, const cyc_curve* const (&in)[3],
+                            const cyc_mobius* f, double u0, cyc_surface** out,
+                            const char* invalid, Make&& make) {
+  for (int i = 0; i < 3; ++i)
+    if (!in[i]) return fail(CYC_E_NULL_ARGUMENT, "%s: input curve %d of 3 is NULL", fn, i + 1);
+  REQUIRE(out);
+  Mobius m;
+  if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+  Surface S;
+  double bad_u = u0;
+  const Status s = make(in[0]->curve, in[1]->curve, in[2]->curve, f ? &m : nullptr, S, &bad_u);
+  if (s == Status::invalid_argument) return fail(int(s), "%s: %s", fn, invalid);
+  if (s != Status::ok) {
+    if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
+    return from_core_at(fn, s, bad_u);
+  }
+  return emit(fn, ctx, out, S);
+}
+
+}  // namespace
 
 extern "C" {
 
@@ -62,7 +100,7 @@ const char* cyc_status_name(int status) {
     case CYC_E_SINGULAR_POINT: case CYC_E_DEGENERATE_RINGED:
     case CYC_E_PARALLEL_LINES: case CYC_E_NO_COMMON_NORMAL: case CYC_E_RANK_DEFICIENT:
     case CYC_E_AT_INVERSION_CENTER: case CYC_E_NOT_PARABOLIC: case CYC_E_EMPTY_REAL_LOCUS:
-    case CYC_E_TOO_FEW_LINES: case CYC_E_NO_NORMAL_FORM:
+    case CYC_E_TOO_FEW_LINES: case CYC_E_NO_NORMAL_FORM: case CYC_E_NOT_PYTHAGOREAN:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));
@@ -286,16 +324,6 @@ int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, int order
 
 // ------------------------------------------------------------ surfaces
 
-namespace {
-Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
-  if (!f) return ok();
-  if (Status s = make_mobius(f->degree, f->alpha, f->beta, f->gamma, f->delta, m);
-      s != Status::ok)
-    return fail(int(s), "%s: circle parameter f: %s", fn, explain(s));
-  return ok();
-}
-}  // namespace
-
 int cyc_prcs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
                     const cyc_mobius* f, double u0, double u1, cyc_surface** out) {
   const char* fn = "cyc_prcs_create";
@@ -321,24 +349,28 @@ int cyc_prrs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
                     cyc_surface** out) {
   const char* fn = "cyc_prrs_create";
   return run(ctx, fn, [&] {
-    REQUIRE(p1);
-    REQUIRE(p2);
-    REQUIRE(p3);
-    REQUIRE(out);
-    Mobius m;
-    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
-    Surface S;
-    double bad_u = u0;
-    const Status s =
-        make_prrs(p1->curve, p2->curve, p3->curve, f ? &m : nullptr, u0, u1, S, &bad_u);
-    if (s == Status::invalid_argument)
-      return fail(int(s), "%s: inputs must be curves or points, not all points and no line "
-                  "elements", fn);
-    if (s != Status::ok) {
-      if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
-      return from_core_at(fn, s, bad_u);
-    }
-    return emit(fn, ctx, out, S);
+    return three_curve_surface(
+        fn, ctx, {p1, p2, p3}, f, u0, out,
+        "inputs must be curves or points, not all points and no line elements",
+        [&](const RationalCurve& a, const RationalCurve& b, const RationalCurve& c,
+            const Mobius* m, Surface& S, double* bad) {
+          return make_prrs(a, b, c, m, u0, u1, S, bad);
+        });
+  });
+}
+
+int cyc_ringed_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                      const cyc_curve* c, const cyc_mobius* f, double u0, double u1,
+                      cyc_surface** out) {
+  const char* fn = "cyc_ringed_create";
+  return run(ctx, fn, [&] {
+    return three_curve_surface(
+        fn, ctx, {d, n, c}, f, u0, out,
+        "d, n and c must be curves or points, not line elements",
+        [&](const RationalCurve& a, const RationalCurve& b, const RationalCurve& cc,
+            const Mobius* m, Surface& S, double* bad) {
+          return make_ringed(a, b, cc, m, u0, u1, S, bad);
+        });
   });
 }
 

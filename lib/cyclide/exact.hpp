@@ -49,6 +49,11 @@ Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
                         const RationalCurve& p3, ExactFrame& out, double mid = 0.0,
                         double half = 1.0);
 
+// The ringed surface (d, n, c) of seed 001 eq. (3): o = d, a = n, p = c.
+Status exact_ringed_frame(const RationalCurve& d, const RationalCurve& n,
+                          const RationalCurve& c, ExactFrame& out, double mid = 0.0,
+                          double half = 1.0);
+
 // The cross-multiplied identity a.num * b.den == b.num * a.den, coefficient
 // by coefficient, relative to the largest coefficient (tests use it to
 // compare with the papers' closed forms without normalizing factors).

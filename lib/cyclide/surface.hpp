@@ -15,6 +15,7 @@
 #include "cyclide/prcs.hpp"
 #include "cyclide/prrs.hpp"
 #include "cyclide/ringed.hpp"
+#include "cyclide/ringed_dnr.hpp"
 #include "cyclide/status.hpp"
 
 namespace cyclide {
@@ -31,6 +32,8 @@ struct Mobius {
 enum class SurfaceKind : int {
   prcs = 1,  // canal surface from two curves (or a curve and a line element)
   prrs = 2,  // ringed surface from three curves (some may be points)
+  ringed = 3,  // ringed surface (d, n, rho) from its directrix d, orientation
+               // n and a curve c on it (seed 001 eq. (3))
 };
 
 // What an evaluation writes (null = not wanted).
@@ -103,9 +106,12 @@ class Surface {
   // every degenerate configuration).
   template <int N>
   Status numeric_frame(double u, CircleFrame<Taylor<double, N>>& F) const {
-    return kind == SurfaceKind::prcs
-               ? prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F)
-               : prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
+    switch (kind) {
+      case SurfaceKind::prcs: return prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F);
+      case SurfaceKind::prrs: return prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
+      case SurfaceKind::ringed: return ringed_frame<N>(curve[0], curve[1], curve[2], u, F);
+    }
+    return Status::internal_error;
   }
 
   // Circle data at u: center, plane normal (unit), radius^2.
@@ -157,6 +163,12 @@ Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius*
 Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
                  const RationalCurve& p3, const Mobius* f, double u0, double u1,
                  Surface& out, double* bad_u = nullptr);
+// Ringed surface (d, n, rho) through the curve c (seed 001 eq. (3)): d, n
+// rational curves or constants (points), c a rational curve (or a point);
+// line elements are invalid_argument. Scanned like make_prrs: n = 0 is
+// dependent_planes (no circle plane), c on the axis line singular_point.
+Status make_ringed(const RationalCurve& d, const RationalCurve& n, const RationalCurve& c,
+                   const Mobius* f, double u0, double u1, Surface& out, double* bad_u = nullptr);
 // Mobius coefficients from power-form coefficient arrays of length degree+1.
 Status make_mobius(int degree, const double* alpha, const double* beta,
                    const double* gamma, const double* delta, Mobius& out);

@@ -183,6 +183,22 @@ Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
   return Status::ok;
 }
 
+Status exact_ringed_frame(const RationalCurve& d, const RationalCurve& n,
+                          const RationalCurve& c, ExactFrame& out, double mid, double half) {
+  Algebra A;
+  A.mid = mid;
+  A.half = half;
+  const Hom hd = homogeneous(A, d), hn = homogeneous(A, n), hc = homogeneous(A, c);
+  ExactFrame F;
+  F.o = to_exact(hd.P, hd.w);
+  F.a = to_exact(hn.P, hn.w);
+  F.p = to_exact(hc.P, hc.w);
+  squared_distance(A, hc, hd.P, hd.w, F.r2_num, F.r2_den);
+  if (A.overflow) return Status::degree_too_high;
+  out = F;
+  return Status::ok;
+}
+
 double cross_identity_residual(const ExactVec3& a, const ExactVec3& b) {
   Algebra A;
   double worst = 0, scale = 0;

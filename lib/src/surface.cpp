@@ -322,10 +322,16 @@ void compile_frames(Surface& S) {
   C.u0 = S.u0;
   C.u1 = S.u1;
   ExactFrame E;
-  const Status st =
-      S.kind == SurfaceKind::prcs
-          ? exact_prcs_frame(S.curve[0], S.curve[1], E, C.mid, half)
-          : exact_prrs_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
+  Status st = Status::internal_error;
+  switch (S.kind) {
+    case SurfaceKind::prcs: st = exact_prcs_frame(S.curve[0], S.curve[1], E, C.mid, half); break;
+    case SurfaceKind::prrs:
+      st = exact_prrs_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
+      break;
+    case SurfaceKind::ringed:
+      st = exact_ringed_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
+      break;
+  }
   if (st != Status::ok) return;
   const ExactVec3* src[3] = {&E.o, &E.a, &E.p};
   Lanes4* dst[3] = {&C.o, &C.a, &C.p};
@@ -449,6 +455,31 @@ Status make_prcs(const RationalCurve& p1, const RationalCurve& p2, const Mobius*
   return Status::ok;
 }
 
+namespace {
+
+// The common tail of the builders of three-curve surfaces (PRRS, ringed
+// (d, n, c)): assemble, scan the domain, compile the frames, then write.
+Status make_three_curve_surface(SurfaceKind kind, const RationalCurve& a, const RationalCurve& b,
+                                const RationalCurve& c, const Mobius* f, double u0, double u1,
+                                Surface& out, double* bad_u) {
+  Surface S;
+  S.kind = kind;
+  S.curve[0] = a;
+  S.curve[1] = b;
+  S.curve[2] = c;
+  S.curve_count = 3;
+  if (f) S.f = *f;
+  S.f_constant = mobius_is_constant(S.f);
+  S.u0 = u0;
+  S.u1 = u1;
+  if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  compile_frames(S);
+  out = S;
+  return Status::ok;
+}
+
+}  // namespace
+
 Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
                  const RationalCurve& p3, const Mobius* f, double u0, double u1,
                  Surface& out, double* bad_u) {
@@ -461,20 +492,15 @@ Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
   }
   // Three points give one circle, not a surface.
   if (constants == 3) return Status::invalid_argument;
-  Surface S;
-  S.kind = SurfaceKind::prrs;
-  S.curve[0] = p1;
-  S.curve[1] = p2;
-  S.curve[2] = p3;
-  S.curve_count = 3;
-  if (f) S.f = *f;
-  S.f_constant = mobius_is_constant(S.f);
-  S.u0 = u0;
-  S.u1 = u1;
-  if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
-  compile_frames(S);
-  out = S;
-  return Status::ok;
+  return make_three_curve_surface(SurfaceKind::prrs, p1, p2, p3, f, u0, u1, out, bad_u);
+}
+
+Status make_ringed(const RationalCurve& d, const RationalCurve& n, const RationalCurve& c,
+                   const Mobius* f, double u0, double u1, Surface& out, double* bad_u) {
+  if (Status st = check_domain(u0, u1); st != Status::ok) return st;
+  for (const RationalCurve* x : {&d, &n, &c})
+    if (x->kind == CurveKind::line_element) return Status::invalid_argument;
+  return make_three_curve_surface(SurfaceKind::ringed, d, n, c, f, u0, u1, out, bad_u);
 }
 
 const char* status_name(Status s) noexcept {
@@ -500,6 +526,7 @@ const char* status_name(Status s) noexcept {
     case Status::empty_real_locus: return "CYC_E_EMPTY_REAL_LOCUS";
     case Status::too_few_lines: return "CYC_E_TOO_FEW_LINES";
     case Status::no_normal_form: return "CYC_E_NO_NORMAL_FORM";
+    case Status::not_pythagorean: return "CYC_E_NOT_PYTHAGOREAN";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -167,6 +167,7 @@ CYC_API int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, i
 /** Surface kinds reported by cyc_surface_kind. */
 #define CYC_SURFACE_PRCS 1 /* canal surface by PRCS (seed 000 eq. 8-13) */
 #define CYC_SURFACE_PRRS 2 /* ringed surface by PRRS (seed 000 eq. 24-27) */
+#define CYC_SURFACE_RINGED 3 /* ringed surface (d, n, rho) through a curve c (seed 001 eq. 3) */
 
 /** PRCS: the canal surface through p1 and p2 (either may be a line element;
  *  not a point), x(u,v) of eq. (11) with circle parameter f (NULL: f = v),
@@ -180,9 +181,20 @@ CYC_API int cyc_prcs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_cur
 CYC_API int cyc_prrs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
                             const cyc_curve* p3, const cyc_mobius* f, double u0,
                             double u1, cyc_surface** out);
+/** Ringed surface R : (d, n, rho) of seed 001: the circles centered at the
+ *  directrix d(u) in the planes with normal n(u) (the orientation function),
+ *  parameterized by eq. (3) (the rotation of the curve c about the line
+ *  element (d, n), circle parameter f; NULL: f = v). d, n and c are curves
+ *  or points (constant), not line elements. The circle's center is the foot
+ *  of c on the line (d, n): d itself when (c - d).n = 0, as for a curve of
+ *  eq. (4) c = d + rho f. Statuses as cyc_prrs_create: CYC_E_DEPENDENT_PLANES
+ *  where n = 0, CYC_E_SINGULAR_POINT where c lies on the line (radius 0). */
+CYC_API int cyc_ringed_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                              const cyc_curve* c, const cyc_mobius* f, double u0, double u1,
+                              cyc_surface** out);
 /** Destroy a surface (NULL: no-op). ctx may be NULL. */
 CYC_API void cyc_surface_destroy(cyc_context* ctx, cyc_surface* surface);
-/** CYC_SURFACE_PRCS or CYC_SURFACE_PRRS. */
+/** CYC_SURFACE_PRCS, CYC_SURFACE_PRRS or CYC_SURFACE_RINGED. */
 CYC_API int cyc_surface_kind(cyc_context* ctx, const cyc_surface* surface, int* kind);
 /** The domain [u0, u1] the surface was checked on. */
 CYC_API int cyc_surface_domain(cyc_context* ctx, const cyc_surface* surface, double* u0,
@@ -592,6 +604,50 @@ CYC_API int cyc_blend_ringed_spline(cyc_context* ctx, const cyc_blend_end* ends,
  *  other's and the guides' parameterizations to order K for every v. */
 CYC_API int cyc_blend_ringed_spline_matched(cyc_context* ctx, const cyc_blend_end* ends, int n,
                                             int K, const double* knots, cyc_surface** pieces);
+
+/* ------------------------------------------- ringed surfaces (seed 001) */
+
+/** Hermite data of a ringed surface (d, n, rho) at a join (seed 001 eq. 37):
+ *  directrix d and d', orientation function n and n' (with its length), the
+ *  circle radius rho and rho'. */
+typedef struct cyc_ringed_jet {
+  double d[3], dd[3];
+  double n[3], dn[3];
+  double rho, drho;
+} cyc_ringed_jet;
+
+/** The jet of any surface of the library at u: d = the circle's center,
+ *  n = its axis, rho = its radius. CYC_E_SINGULAR_POINT for radius 0. */
+CYC_API int cyc_surface_ringed_jet(cyc_context* ctx, const cyc_surface* surface, double u,
+                                   cyc_ringed_jet* out);
+
+/** Options of cyc_blend_ringed_pcurve (initialize with
+ *  cyc_pcurve_blend_options_init). */
+typedef struct cyc_pcurve_blend_options {
+  int sign;    /* branch of eqs. (43) / (47): +1 (default, "more suitable") or -1 */
+  double tau;  /* 0 (default): one P-curve of degree 6, eq. (43); in (0, 1): P-biarc (47) */
+  double v[3]; /* projection direction (default (0, 0, 1)); any nonzero length */
+} cyc_pcurve_blend_options;
+CYC_API void cyc_pcurve_blend_options_init(cyc_pcurve_blend_options* options);
+
+/** The two-surface blend of seed 001 §4 between the ends a (t = 0) and b
+ *  (t = 1): (d, n.v, rho) by a Ferguson cubic (eq. 38), the projection of n
+ *  perpendicular to v by a planar P-curve (39) of degree 6 (43) or a P-biarc
+ *  (47), the curve c = d + rho (n x v)/sigma (4), (15) and the
+ *  parameterization (3): exact rational ringed surfaces (CYC_SURFACE_RINGED),
+ *  C^1 in the circle family at both ends. Writes one handle (tau = 0, on
+ *  [0, 1]) or two ([0, tau], [tau, 1]) to pieces[0..1] and their number to
+ *  *count; all or nothing. The P-curve depends on the frame of the plane
+ *  perpendicular to v (its e1 is the projection of the x axis, of the y axis
+ *  when v is near x): with v = (0, 0, 1) the paper's coordinates.
+ *  CYC_E_NOT_PYTHAGOREAN when n is parallel to v at an end (the projected
+ *  data vanish: no square root), CYC_E_BAD_DOMAIN for tau outside [0, 1),
+ *  CYC_E_INVALID_ARGUMENT for sign not +-1 or v = 0, and the statuses of
+ *  cyc_ringed_create. options may be NULL (defaults). */
+CYC_API int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a,
+                                    const cyc_ringed_jet* b,
+                                    const cyc_pcurve_blend_options* options,
+                                    cyc_surface** pieces, int* count);
 
 /** Continuity of the join of surface a at u = ua and surface b at u = ub
  *  along a common circle, at the points x_a(ua, va[i]) and their closest

@@ -1,0 +1,404 @@
+#include "cyclide/pcurve.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cyclide {
+inline namespace v0 {
+
+namespace {
+
+// Polynomial arithmetic on CurvePoly that remembers a degree overflow.
+struct Ring {
+  bool overflow = false;
+  CurvePoly mul(const CurvePoly& a, const CurvePoly& b) {
+    CurvePoly r;
+    if (!multiply(a, b, r)) overflow = true;
+    return r;
+  }
+  CurvePoly sq(const CurvePoly& a) { return mul(a, a); }
+};
+
+double max_abs(const CurvePoly& p) {
+  double m = 0;
+  for (int k = 0; k <= p.deg; ++k) m = std::max(m, std::abs(p.c[k]));
+  return m;
+}
+
+bool finite(const CurvePoly& p) {
+  for (int k = 0; k <= p.deg; ++k)
+    if (!std::isfinite(p.c[k])) return false;
+  return true;
+}
+
+// The homogeneous power-form polynomials (x, y, z, w) of a curve
+// (Bernstein curves converted on their interval).
+void power_form(const RationalCurve& c, CurvePoly (&P)[3], CurvePoly& w) {
+  const CurvePoly* src[4] = {&c.x, &c.y, &c.z, &c.w};
+  CurvePoly* dst[4] = {&P[0], &P[1], &P[2], &w};
+  for (int i = 0; i < 4; ++i) {
+    if (c.bernstein)
+      from_bernstein(src[i]->c, c.degree(), c.u0, c.u0 + c.h, *dst[i]);
+    else
+      *dst[i] = *src[i];
+    dst[i]->trim();
+  }
+}
+
+}  // namespace
+
+// Eqs. (8)-(11).
+Status pcurve_frame(const CurvePoly (&x)[4], PCurveFrame& out) {
+  int deg = 0;
+  bool zero = true;
+  for (const CurvePoly& p : x) {
+    if (!finite(p)) return Status::not_finite;
+    deg = std::max(deg, p.deg);
+    zero = zero && p.is_zero();
+  }
+  if (zero) return Status::invalid_argument;
+  if (2 * deg > kMaxCurveDegree) return Status::degree_too_high;
+  Ring R;
+  const CurvePoly s00 = R.sq(x[0]), s11 = R.sq(x[1]), s22 = R.sq(x[2]), s33 = R.sq(x[3]);
+  auto twice = [&](const CurvePoly& a, const CurvePoly& b) { return R.mul(a, b).scaled(2.0); };
+  PCurveFrame P;
+  P.n[0] = s00 + s11 - s22 - s33;
+  P.n[1] = twice(x[1], x[2]) - twice(x[0], x[3]);
+  P.n[2] = twice(x[0], x[2]) + twice(x[1], x[3]);
+  P.sigma = s00 + s11 + s22 + s33;
+  P.n1[0] = twice(x[1], x[2]) + twice(x[0], x[3]);
+  P.n1[1] = s00 - s11 + s22 - s33;
+  P.n1[2] = twice(x[2], x[3]) - twice(x[0], x[1]);
+  P.n2[0] = twice(x[1], x[3]) - twice(x[0], x[2]);
+  P.n2[1] = twice(x[0], x[1]) + twice(x[2], x[3]);
+  P.n2[2] = s00 - s11 - s22 + s33;
+  if (R.overflow) return Status::degree_too_high;
+  out = P;
+  return Status::ok;
+}
+
+// Eq. (12).
+RationalField pcurve_field(const PCurveFrame& P, double phi) {
+  RationalField f;
+  const double c = std::cos(phi), s = std::sin(phi);
+  for (int j = 0; j < 3; ++j) f.F[j] = P.n1[j].scaled(c) + P.n2[j].scaled(s);
+  f.w = P.sigma;
+  return f;
+}
+
+// Top-down: q's leading coefficient is sqrt of p's; each further
+// coefficient of q follows from the next coefficient of p = q^2.
+bool poly_sqrt(const CurvePoly& p, CurvePoly& q, double tol, double* residual) {
+  CurvePoly a = p;
+  a.trim();
+  const double scale = max_abs(a);
+  if (residual) *residual = HUGE_VAL;
+  if (!(scale > 0)) {  // p = 0: q = 0
+    q = CurvePoly();
+    if (residual) *residual = 0;
+    return true;
+  }
+  if (a.deg % 2 != 0 || !(a.c[a.deg] > 0)) return false;
+  const int m = a.deg / 2;
+  CurvePoly r;
+  r.deg = m;
+  r.c[m] = std::sqrt(a.c[a.deg]);
+  for (int k = m - 1; k >= 0; --k) {
+    // Coefficient of t^(m + k) in q^2: 2 q_m q_k + sum_{i+j=m+k, k<i,j<m} q_i q_j.
+    double s = a.c[m + k];
+    for (int i = k + 1; i < m; ++i) {
+      const int j = m + k - i;
+      if (j > k && j < m) s -= r.c[i] * r.c[j];
+    }
+    r.c[k] = s / (2 * r.c[m]);
+  }
+  // Remainder: every coefficient of p - q^2.
+  double worst = 0;
+  for (int e = 0; e <= a.deg; ++e) {
+    double s = a.c[e];
+    for (int i = 0; i <= m; ++i)
+      if (e - i >= 0 && e - i <= m) s -= r.c[i] * r.c[e - i];
+    worst = std::max(worst, std::abs(s));
+  }
+  const double rel = worst / scale;
+  if (residual) *residual = rel;
+  if (!(rel <= tol)) return false;
+  q = r;
+  return true;
+}
+
+// Eqs. (13)-(16).
+Status projection_field(const RationalCurve& n, const Vec3d& v, RationalField& out) {
+  if (!input_ok(v)) return Status::not_finite;
+  if (!(std::abs(v.norm() - 1.0) <= 1e-12)) return Status::invalid_argument;
+  if (n.kind == CurveKind::line_element) return Status::invalid_argument;
+  CurvePoly N[3], w;
+  power_form(n, N, w);
+  if (w.deg != 0) return Status::invalid_argument;  // polynomial n only
+  for (CurvePoly& p : N) p = p.scaled(1.0 / w.c[0]);
+  Ring R;
+  const CurvePoly nv = N[0].scaled(v.x()) + N[1].scaled(v.y()) + N[2].scaled(v.z());
+  CurvePoly s2 = R.sq(N[0]) + R.sq(N[1]) + R.sq(N[2]) - R.sq(nv);
+  if (R.overflow) return Status::degree_too_high;
+  s2.trim_relative(1e-14);
+  CurvePoly sigma;
+  if (!poly_sqrt(s2, sigma) || sigma.is_zero()) return Status::not_pythagorean;
+  RationalField f;
+  // n x v.
+  f.F[0] = N[1].scaled(v.z()) - N[2].scaled(v.y());
+  f.F[1] = N[2].scaled(v.x()) - N[0].scaled(v.z());
+  f.F[2] = N[0].scaled(v.y()) - N[1].scaled(v.x());
+  f.w = sigma;
+  out = f;
+  return Status::ok;
+}
+
+// Eq. (4).
+Status ringed_curve(const RationalCurve& d, const CurvePoly& rho_num, const CurvePoly& rho_den,
+                    const RationalField& f, RationalCurve& c) {
+  if (d.kind == CurveKind::line_element) return Status::invalid_argument;
+  if (!finite(rho_num) || !finite(rho_den) || !finite(f.w)) return Status::not_finite;
+  for (const CurvePoly& p : f.F)
+    if (!finite(p)) return Status::not_finite;
+  if (rho_den.is_zero() || f.w.is_zero()) return Status::invalid_argument;
+  CurvePoly D[3], wd;
+  power_form(d, D, wd);
+  Ring R;
+  const CurvePoly den = R.mul(R.mul(wd, rho_den), f.w);
+  const CurvePoly dq = R.mul(rho_den, f.w), wr = R.mul(wd, rho_num);
+  double h[4 * (kMaxCurveDegree + 1)] = {};
+  int deg = den.deg;
+  CurvePoly num[3];
+  for (int j = 0; j < 3; ++j) {
+    num[j] = R.mul(D[j], dq) + R.mul(wr, f.F[j]);
+    deg = std::max(deg, num[j].deg);
+  }
+  if (R.overflow) return Status::degree_too_high;
+  for (int k = 0; k <= deg; ++k) {
+    for (int j = 0; j < 3; ++j) h[4 * k + j] = num[j].c[k];
+    h[4 * k + 3] = den.c[k];
+  }
+  const Status st = make_rational_curve(deg, h, c);
+  return st == Status::not_finite ? Status::numerical_overflow : st;
+}
+
+// ------------------------------------------------------------ planar P-curves
+
+namespace {
+
+// sqrt with the principal branch; not_pythagorean for 0 (eqs. (43), (47)
+// divide by it).
+bool root(Complex p, Complex& r) {
+  if (!(std::abs(p) > 0)) return false;
+  r = std::sqrt(p);
+  return true;
+}
+
+bool finite(Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
+
+Status check_data(Complex p0, Complex v0, Complex p1, Complex v1, int sign) {
+  for (Complex z : {p0, v0, p1, v1})
+    if (!finite(z) || !(std::abs(z.real()) <= kMaxInputMagnitude) ||
+        !(std::abs(z.imag()) <= kMaxInputMagnitude))
+      return Status::not_finite;
+  if (sign != 1 && sign != -1) return Status::invalid_argument;
+  return Status::ok;
+}
+
+Status finish(const Complex* w, int count) {
+  for (int i = 0; i < count; ++i)
+    if (!finite(w[i])) return Status::numerical_overflow;
+  return Status::ok;
+}
+
+}  // namespace
+
+// Eq. (43).
+Status planar_pcurve_hermite(Complex p0, Complex v0, Complex p1, Complex v1, int sign,
+                             PlanarPCurve& out) {
+  if (Status st = check_data(p0, v0, p1, v1, sign); st != Status::ok) return st;
+  Complex r0, r1;
+  if (!root(p0, r0) || !root(p1, r1)) return Status::not_pythagorean;
+  const double s = sign;
+  PlanarPCurve P;
+  P.n = 3;
+  P.w[0] = r0;
+  P.w[1] = (6.0 * p0 + v0) / (6.0 * r0);
+  P.w[2] = s * (6.0 * p1 - v1) / (6.0 * r1);
+  P.w[3] = s * r1;
+  if (Status st = finish(P.w, 4); st != Status::ok) return st;
+  out = P;
+  return Status::ok;
+}
+
+// Eq. (47) (all signs equal; the square roots placed as the ERRATA / the
+// transcription's symbolic check confirm).
+Status planar_pbiarc(Complex p0, Complex v0, Complex p1, Complex v1, double tau, int sign,
+                     PlanarPCurve (&out)[2]) {
+  if (Status st = check_data(p0, v0, p1, v1, sign); st != Status::ok) return st;
+  if (!std::isfinite(tau)) return Status::not_finite;
+  if (!(tau > 0 && tau < 1)) return Status::bad_domain;
+  Complex r0, r1;
+  if (!root(p0, r0) || !root(p1, r1)) return Status::not_pythagorean;
+  const double s = sign;
+  Complex w[6];
+  w[0] = r0;
+  w[1] = (4.0 * p0 + v0) / (4.0 * r0);
+  w[2] = ((tau - 1) * (s * r0 * v1 + r1 * (4.0 * p0 + v0)) + s * 4.0 * r0 * p1) /
+         (4.0 * r0 * r1 * tau);
+  w[3] = (tau * (-r1 * v0 + s * r0 * (4.0 * p1 - v1)) - 4.0 * p0 * r1) /
+         (4.0 * r0 * r1 * (tau - 1));
+  w[4] = s * (4.0 * p1 - v1) / (4.0 * r1);
+  w[5] = s * r1;
+  if (Status st = finish(w, 6); st != Status::ok) return st;
+  for (int k = 0; k < 2; ++k) {
+    out[k].n = 2;
+    for (int i = 0; i < 3; ++i) out[k].w[i] = w[3 * k + i];
+  }
+  return Status::ok;
+}
+
+void planar_pcurve_polys(const PlanarPCurve& P, CurvePoly& x1, CurvePoly& x2, CurvePoly& sigma) {
+  double re[4], im[4];
+  for (int i = 0; i <= P.n; ++i) {
+    re[i] = P.w[i].real();
+    im[i] = P.w[i].imag();
+  }
+  CurvePoly a, b;
+  from_bernstein(re, P.n, 0.0, 1.0, a);
+  from_bernstein(im, P.n, 0.0, 1.0, b);
+  Ring R;
+  // (a + i b)^2 = a^2 - b^2 + 2 i a b; |w|^2 = a^2 + b^2.
+  x1 = R.sq(a) - R.sq(b);
+  x2 = R.mul(a, b).scaled(2.0);
+  sigma = R.sq(a) + R.sq(b);
+}
+
+// ------------------------------------------------------------ the blend of §4
+
+Status ringed_jet(const Surface& S, double u, RingedJet& out) {
+  RingedData R;
+  if (Status st = S.ringed(u, R); st != Status::ok) return st;
+  if (!(R.rho2 > 0)) return Status::singular_point;
+  RingedJet J;
+  J.d = R.c;
+  J.dd = R.dc;
+  J.n = R.n;
+  J.dn = R.dn;
+  J.rho = std::sqrt(R.rho2);
+  J.drho = R.rho_rho_prime / J.rho;
+  out = J;
+  return Status::ok;
+}
+
+namespace {
+
+// |n x v| / |n| below this: n counts as parallel to v (§4 blend).
+constexpr double kParallelTol = 1e-8;
+
+// A rotation taking v to e3 (rows: an orthonormal basis e1, e2, v), with
+// e1 the projection of the x axis (of the y axis if v is near x) onto the
+// plane: the identity for v = e3, so the paper's coordinates are kept
+// (the P-curve interpolants depend on the plane's frame through the
+// branch of the complex square roots).
+Eigen::Matrix3d to_e3(const Vec3d& v) {
+  const Vec3d a = std::abs(v.x()) < 0.9 ? Vec3d::UnitX() : Vec3d::UnitY();
+  const Vec3d e1 = (a - a.dot(v) * v).normalized(), e2 = v.cross(e1);
+  Eigen::Matrix3d M;
+  M.row(0) = e1.transpose();
+  M.row(1) = e2.transpose();
+  M.row(2) = v.transpose();
+  return M;
+}
+
+// The Ferguson cubic (C^1 Hermite on [0, 1]) of scalar data, power form.
+CurvePoly ferguson(double p0, double v0, double p1, double v1) {
+  const double s[2] = {p0, v0}, e[2] = {p1, v1};
+  double b[4];
+  hermite_bernstein(1, 1.0, s, e, b);
+  CurvePoly p;
+  from_bernstein(b, 3, 0.0, 1.0, p);
+  return p;
+}
+
+// Rotate the polynomial vector P (in the frame of M's rows) back: M^T P.
+void rotate_back(const Eigen::Matrix3d& M, const CurvePoly (&P)[3], CurvePoly (&out)[3]) {
+  for (int j = 0; j < 3; ++j)
+    out[j] = P[0].scaled(M(0, j)) + P[1].scaled(M(1, j)) + P[2].scaled(M(2, j));
+}
+
+Status polynomial_curve(const CurvePoly (&P)[3], RationalCurve& out) {
+  int deg = 0;
+  for (const CurvePoly& p : P) deg = std::max(deg, p.deg);
+  double xyz[3 * (kMaxCurveDegree + 1)];
+  for (int k = 0; k <= deg; ++k)
+    for (int j = 0; j < 3; ++j) xyz[3 * k + j] = P[j].c[k];
+  return make_polynomial_curve(deg, xyz, out);
+}
+
+}  // namespace
+
+Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
+                                const RingedBlendOptions& options, Surface (&pieces)[2],
+                                int& count, double* bad_u) {
+  for (const RingedJet* J : {&a, &b})
+    if (!input_ok(J->d) || !input_ok(J->dd) || !input_ok(J->n) || !input_ok(J->dn) ||
+        !input_ok(J->rho) || !input_ok(J->drho))
+      return Status::not_finite;
+  if (!input_ok(options.v) || !input_ok(options.tau)) return Status::not_finite;
+  if (!(options.v.norm() > 0)) return Status::invalid_argument;
+  const Eigen::Matrix3d M = to_e3(options.v.normalized());
+  // Data in the frame where v = e3 (38), (39).
+  const Vec3d d0 = M * a.d, dd0 = M * a.dd, n0 = M * a.n, dn0 = M * a.dn;
+  const Vec3d d1 = M * b.d, dd1 = M * b.dd, n1 = M * b.n, dn1 = M * b.dn;
+  // (38): Ferguson cubics for d, n . v and rho.
+  CurvePoly D[3], rho = ferguson(a.rho, a.drho, b.rho, b.drho);
+  for (int j = 0; j < 3; ++j) D[j] = ferguson(d0[j], dd0[j], d1[j], dd1[j]);
+  const CurvePoly n3 = ferguson(n0.z(), dn0.z(), n1.z(), dn1.z());
+  // (39): the planar data as complex numbers, one or two P-curves. n
+  // (nearly) parallel to v at an end leaves no planar data to take the
+  // square root of (rounding would make |p| ~ 1e-16 |n|, and w1 huge).
+  const Complex p0(n0.x(), n0.y()), v0(dn0.x(), dn0.y()), p1(n1.x(), n1.y()),
+      v1(dn1.x(), dn1.y());
+  if (!(std::abs(p0) > kParallelTol * n0.norm()) || !(std::abs(p1) > kParallelTol * n1.norm()))
+    return Status::not_pythagorean;
+  PlanarPCurve P[2];
+  int m = 1;
+  if (options.tau == 0.0) {
+    if (Status st = planar_pcurve_hermite(p0, v0, p1, v1, options.sign, P[0]); st != Status::ok)
+      return st;
+  } else {
+    if (Status st = planar_pbiarc(p0, v0, p1, v1, options.tau, options.sign, P); st != Status::ok)
+      return st;
+    m = 2;
+  }
+  const double knots[3] = {0.0, m == 1 ? 1.0 : options.tau, 1.0};
+  Surface out[2];
+  for (int k = 0; k < m; ++k) {
+    // n = (x1, x2, n3); f = n x e3 / sigma = (x2, -x1, 0) / sigma (15);
+    // c = d + rho f (4); everything rotated back to world coordinates.
+    CurvePoly x1, x2, sigma;
+    planar_pcurve_polys(P[k], x1, x2, sigma);
+    const CurvePoly nl[3] = {x1, x2, n3};
+    RationalField f;
+    const CurvePoly fl[3] = {x2, -x1, CurvePoly()};
+    CurvePoly Dw[3], Nw[3];
+    rotate_back(M, D, Dw);
+    rotate_back(M, nl, Nw);
+    rotate_back(M, fl, f.F);
+    f.w = sigma;
+    RationalCurve dc, nc, cc;
+    if (Status st = polynomial_curve(Dw, dc); st != Status::ok) return st;
+    if (Status st = polynomial_curve(Nw, nc); st != Status::ok) return st;
+    if (Status st = ringed_curve(dc, rho, CurvePoly(1.0), f, cc); st != Status::ok) return st;
+    if (Status st = make_ringed(dc, nc, cc, nullptr, knots[k], knots[k + 1], out[k], bad_u);
+        st != Status::ok)
+      return st;
+  }
+  for (int k = 0; k < m; ++k) pieces[k] = out[k];
+  count = m;
+  return Status::ok;
+}
+
+}  // namespace v0
+}  // namespace cyclide

@@ -1,0 +1,323 @@
+// Seed 001 (ringed surfaces (d, n, rho)), labels "paper;ringed": P-curves
+// and their perpendicular companions (8)-(11), the spherical curves (12) and
+// (15), the curve c = d + rho f (4) and the parameterization (3), planar
+// P-curve Hermite interpolation (43) and P-biarcs (47), and the two-surface
+// blend of §4 on Example 4.1 (the derived numbers of the transcription).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cyclide/blend.hpp"
+#include "cyclide/pcurve.hpp"
+
+using namespace cyclide;
+
+namespace {
+
+CurvePoly poly(std::initializer_list<double> c) {
+  CurvePoly p;
+  p.assign(c.begin(), int(c.size()) - 1);
+  return p;
+}
+
+Vec3d eval3(const CurvePoly (&P)[3], double t) { return Vec3d(P[0](t), P[1](t), P[2](t)); }
+
+Vec3d point(const Surface& S, double u, double v) {
+  double x[3];
+  EvalOut o;
+  o.point = x;
+  EXPECT_EQ(S.eval(u, v, o), Status::ok);
+  return Vec3d(x[0], x[1], x[2]);
+}
+
+// Example 4.1's Hermite data (37) at R1(1) and R2(0) (transcription notes).
+RingedJet example41_start() {
+  RingedJet J;
+  J.d = Vec3d(-4, -3, 1);
+  J.dd = Vec3d(2, 4, 3);
+  J.rho = 1.25;
+  J.drho = 0.5;
+  J.n = Vec3d(1, 1, 1);
+  J.dn = Vec3d(0, 1, 1);
+  return J;
+}
+RingedJet example41_end() {
+  RingedJet J;
+  J.d = Vec3d(0, 0, 0);
+  J.dd = Vec3d(3, 1, 1);
+  J.rho = 2;
+  J.drho = 1;
+  J.n = Vec3d(4, 0, 0);
+  J.dn = Vec3d(0, 1, 1);
+  return J;
+}
+
+}  // namespace
+
+// (8)-(11): |n| = |n1| = |n2| = sigma, pairwise orthogonal, det = sigma^3
+// (transcription note 1), for a cubic quaternion polynomial.
+TEST(PCurve, FrameIdentities) {
+  const CurvePoly x[4] = {poly({1, 0.5, -0.25}), poly({0, 1, 0, 0.5}), poly({-1, 0.25}),
+                          poly({0.5, 0, 1})};
+  PCurveFrame P;
+  ASSERT_EQ(pcurve_frame(x, P), Status::ok);
+  EXPECT_EQ(P.sigma.deg, 6);
+  for (double t : {-1.5, -0.3, 0.0, 0.7, 2.0}) {
+    const Vec3d n = eval3(P.n, t), a = eval3(P.n1, t), b = eval3(P.n2, t);
+    const double s = P.sigma(t), tol = 1e-13 * s * s;
+    EXPECT_NEAR(n.squaredNorm(), s * s, tol);
+    EXPECT_NEAR(a.squaredNorm(), s * s, tol);
+    EXPECT_NEAR(b.squaredNorm(), s * s, tol);
+    EXPECT_NEAR(n.dot(a), 0, tol);
+    EXPECT_NEAR(n.dot(b), 0, tol);
+    EXPECT_NEAR(a.dot(b), 0, tol);
+    EXPECT_NEAR(n.dot(a.cross(b)), s * s * s, 1e-13 * s * s * s);
+  }
+  CurvePoly big[4] = {poly({0, 0, 0, 0, 0, 0, 0, 0, 1}), CurvePoly(), CurvePoly(), CurvePoly()};
+  EXPECT_EQ(pcurve_frame(big, P), Status::degree_too_high);
+  CurvePoly zero[4];
+  EXPECT_EQ(pcurve_frame(zero, P), Status::invalid_argument);
+}
+
+// Prop. 3.1: n a spatial P-curve, f by (12), c by (4): the parameterization
+// (3) is rational and every point is at distance rho from d in the plane
+// through d perpendicular to n.
+TEST(PCurve, Proposition31RingedSurface) {
+  const CurvePoly x[4] = {poly({1, 0.5}), poly({0, 1}), poly({0.5, 0, 0.25}), poly({0.25, -0.5})};
+  PCurveFrame P;
+  ASSERT_EQ(pcurve_frame(x, P), Status::ok);
+  RationalCurve d, n, c;
+  const double dc[12] = {0, 0, 0, 1, 0.5, 0, 0, 0.25, 1, 0, 0, 0.125};
+  ASSERT_EQ(make_polynomial_curve(3, dc, d), Status::ok);
+  double nc[3 * 5] = {};
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j < 3; ++j) nc[3 * k + j] = P.n[j].c[k];
+  ASSERT_EQ(make_polynomial_curve(4, nc, n), Status::ok);
+  const CurvePoly rho = poly({1, 0.25, 0.125});
+  ASSERT_EQ(ringed_curve(d, rho, CurvePoly(1.0), pcurve_field(P, 0.7), c), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_ringed(d, n, c, nullptr, -1.0, 1.0, S), Status::ok);
+  EXPECT_EQ(S.kind, SurfaceKind::ringed);
+  for (double t : {-1.0, -0.4, 0.3, 1.0})
+    for (double v : {-3.0, -0.5, 0.0, 1.0, 1e300}) {
+      const Vec3d X = point(S, t, v), D = d.point(t), N = n.point(t);
+      EXPECT_NEAR((X - D).norm(), rho(t), 1e-12 * (1 + rho(t)));
+      EXPECT_NEAR((X - D).dot(N), 0, 1e-12 * N.norm() * (1 + rho(t)));
+    }
+  // The circle of the surface is (d, n, rho).
+  Vec3d center, un;
+  double r2;
+  ASSERT_EQ(S.circle(0.3, center, un, r2), Status::ok);
+  EXPECT_LT((center - d.point(0.3)).norm(), 1e-13);
+  EXPECT_NEAR(r2, rho(0.3) * rho(0.3), 1e-13);
+}
+
+// Prop. 3.2 on R1 of Example 4.1 (48): n1 = (1, t, t), v = (0, 1, 1)/sqrt 2:
+// |n|^2 - (n.v)^2 = 1 (eq. (14)), f = n x v (15) is constant. With v = e1
+// the remainder 2 t^2 is a square too; with v = e3 (1 + t^2) it is not.
+TEST(PCurve, Proposition32Projection) {
+  RationalCurve n;
+  const double nc[6] = {1, 0, 0, 0, 1, 1};
+  ASSERT_EQ(make_polynomial_curve(1, nc, n), Status::ok);
+  RationalField f;
+  const Vec3d v = Vec3d(0, 1, 1).normalized();
+  ASSERT_EQ(projection_field(n, v, f), Status::ok);
+  EXPECT_EQ(f.w.deg, 0);
+  for (double t : {-2.0, 0.0, 0.5, 3.0}) {
+    const Vec3d F = eval3(f.F, t) / f.w(t), N = n.point(t);
+    EXPECT_NEAR(F.norm(), 1.0, 1e-14);
+    EXPECT_NEAR(F.dot(N), 0.0, 1e-14);
+  }
+  EXPECT_EQ(projection_field(n, Vec3d::UnitX(), f), Status::ok);
+  EXPECT_EQ(f.w.deg, 1);
+  EXPECT_EQ(projection_field(n, Vec3d::UnitZ(), f), Status::not_pythagorean);
+  EXPECT_EQ(projection_field(n, Vec3d(0, 0, 2), f), Status::invalid_argument);
+  CurvePoly q;
+  double res = -1;
+  EXPECT_TRUE(poly_sqrt(poly({4, -4, 1}), q, 1e-12, &res));  // (t - 2)^2
+  EXPECT_EQ(q.deg, 1);
+  EXPECT_NEAR(q.c[1], 1, 1e-15);
+  EXPECT_NEAR(q.c[0], -2, 1e-15);
+  EXPECT_FALSE(poly_sqrt(poly({1, 0, 2, 0, 1.5}), q, 1e-12, &res));
+  EXPECT_GT(res, 1e-3);
+  EXPECT_FALSE(poly_sqrt(poly({1, 2, -1}), q));  // negative leading coefficient
+  EXPECT_FALSE(poly_sqrt(poly({1, 2}), q));      // odd degree
+}
+
+// Eq. (43) on Example 4.1's planar data (39): p0 = 1 + i, v0 = i, p1 = 4,
+// v1 = i, principal roots, + sign; and x = w^2, sigma = |w|^2.
+TEST(PCurve, Equation43Example41) {
+  const Complex p0(1, 1), v0(0, 1), p1(4, 0), v1(0, 1);
+  PlanarPCurve P;
+  ASSERT_EQ(planar_pcurve_hermite(p0, v0, p1, v1, 1, P), Status::ok);
+  EXPECT_NEAR(std::abs(P.w[0] - Complex(1.09868411347, 0.455089860562)), 0, 1e-11);
+  EXPECT_NEAR(std::abs(P.w[1] - Complex(1.15231696788, 0.584571025065)), 0, 1e-11);
+  EXPECT_NEAR(std::abs(P.w[2] - Complex(2, -1.0 / 12)), 0, 1e-14);
+  EXPECT_NEAR(std::abs(P.w[3] - Complex(2, 0)), 0, 1e-14);
+  CurvePoly x1, x2, sigma;
+  planar_pcurve_polys(P, x1, x2, sigma);
+  // Coefficients from t^0 up (the notes list them from t^6 down).
+  const double n1[7] = {1, 0, 7.286754292, -2.392013333, -1.779182139, -0.4126128915,
+                        0.2970540714};
+  const double n2[7] = {1, 1, -2.963263730, 2.989495813, -12.17405276, 15.23267300,
+                        -5.084852322};
+  const double sg[7] = {1.414213562, 0.7071067812, 3.233946190, -3.289833060, 12.07185441,
+                        -15.23080967, 5.093521793};
+  for (int k = 0; k <= 6; ++k) {
+    EXPECT_NEAR(x1.c[k], n1[k], 2e-9) << k;
+    EXPECT_NEAR(x2.c[k], n2[k], 2e-8) << k;
+    EXPECT_NEAR(sigma.c[k], sg[k], 2e-8) << k;
+  }
+  // The Hermite conditions (42) and |x| = sigma.
+  EXPECT_NEAR(x1(0.0), 1, 1e-14);
+  EXPECT_NEAR(x2(0.0), 1, 1e-14);
+  EXPECT_NEAR(x1.derivative()(0.0), 0, 1e-13);
+  EXPECT_NEAR(x2.derivative()(0.0), 1, 1e-13);
+  EXPECT_NEAR(x1(1.0), 4, 1e-12);
+  EXPECT_NEAR(x2(1.0), 0, 1e-12);
+  EXPECT_NEAR(x1.derivative()(1.0), 0, 1e-11);
+  EXPECT_NEAR(x2.derivative()(1.0), 1, 1e-11);
+  for (double t : {0.1, 0.5, 0.9})
+    EXPECT_NEAR(std::hypot(x1(t), x2(t)), sigma(t), 1e-12 * sigma(t));
+  EXPECT_NEAR(x1(0.5), 2.403235340, 1e-9);
+  EXPECT_NEAR(x2(0.5), 0.7685629604, 1e-9);
+  EXPECT_NEAR(sigma(0.5), 2.523138744, 1e-9);
+  EXPECT_EQ(planar_pcurve_hermite(Complex(0, 0), v0, p1, v1, 1, P), Status::not_pythagorean);
+  EXPECT_EQ(planar_pcurve_hermite(p0, v0, p1, v1, 0, P), Status::invalid_argument);
+}
+
+// Eq. (47), P-biarc at tau = 1/2 on the same data: the transcription's w_i
+// and the C^1 join x1(1/2) = x2(1/2), x1'(1/2) = x2'(1/2) (46).
+TEST(PCurve, Equation47BiarcExample41) {
+  const Complex p0(1, 1), v0(0, 1), p1(4, 0), v1(0, 1);
+  PlanarPCurve B[2];
+  ASSERT_EQ(planar_pbiarc(p0, v0, p1, v1, 0.5, 1, B), Status::ok);
+  const Complex w[6] = {{1.098684113, 0.4550898606}, {1.179133395, 0.6493116073},
+                        {2.820866605, -0.7743116073}, {0.2778175085, 1.229401468},
+                        {2, -0.125},                  {2, 0}};
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(std::abs(B[i / 3].w[i % 3] - w[i]), 0, 1e-9) << i;
+  CurvePoly a1, a2, as, b1, b2, bs;
+  planar_pcurve_polys(B[0], a1, a2, as);
+  planar_pcurve_polys(B[1], b1, b2, bs);
+  EXPECT_NEAR(a1(0.5), 2.40323534, 1e-8);
+  EXPECT_NEAR(a2(0.5), 0.7685629604, 1e-9);
+  EXPECT_NEAR(b1(0.5), a1(0.5), 1e-12);
+  EXPECT_NEAR(b2(0.5), a2(0.5), 1e-12);
+  EXPECT_NEAR(a1.derivative()(0.5), 6.0078125, 1e-9);
+  EXPECT_NEAR(a2.derivative()(0.5), -3.015625, 1e-9);
+  EXPECT_NEAR(b1.derivative()(0.5), 6.0078125, 1e-9);
+  EXPECT_NEAR(b2.derivative()(0.5), -3.015625, 1e-9);
+  EXPECT_NEAR(b1(1.0), 4, 1e-12);
+  EXPECT_NEAR(b2.derivative()(1.0), 1, 1e-11);
+  EXPECT_EQ(planar_pbiarc(p0, v0, p1, v1, 1.0, 1, B), Status::bad_domain);
+  EXPECT_EQ(planar_pbiarc(p0, v0, Complex(0, 0), v1, 0.5, 1, B), Status::not_pythagorean);
+}
+
+// Example 4.1 (§4): Ferguson cubics for (d, n3, rho) (38), the degree-6
+// P-curve for (n1, n2) (39), f = (n2, -n1, 0)/sigma, c = d + rho f and the
+// parameterization (3) with phi = u: the transcription's values at t = 1/2.
+TEST(RingedBlendPCurve, Example41) {
+  Surface pieces[2];
+  int count = 0;
+  RingedBlendOptions o;
+  ASSERT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::ok);
+  ASSERT_EQ(count, 1);
+  const Surface& S = pieces[0];
+  EXPECT_EQ(S.kind, SurfaceKind::ringed);
+  EXPECT_LT((S.curve[0].point(0.5) - Vec3d(-2.125, -1.125, 0.75)).norm(), 1e-14);
+  EXPECT_LT((S.curve[2].point(0.5) - Vec3d(-1.649053274, -2.613247615, 0.75)).norm(), 1e-9);
+  const struct {
+    double u;
+    Vec3d s;
+  } ref[4] = {{0, {-2.600946726, 0.3632476150, 0.75}},
+              {1, {-2.280559691, 0.03492916982, -0.2852640984}},
+              {-1, {-2.671369261, -0.09005308026, 1.785264098}},
+              {2, {-1.961918597, -0.6685770886, -0.7354254716}}};
+  for (const auto& r : ref) {
+    const Vec3d X = point(S, 0.5, r.u);
+    EXPECT_LT((X - r.s).norm(), 1e-9) << r.u;
+    EXPECT_NEAR((X - Vec3d(-2.125, -1.125, 0.75)).norm(), 1.5625, 1e-13);
+  }
+  // The end circles are the data's: center d, plane normal n, radius rho.
+  const RingedJet J[2] = {example41_start(), example41_end()};
+  for (int e = 0; e < 2; ++e) {
+    RingedJet K;
+    ASSERT_EQ(ringed_jet(S, double(e), K), Status::ok);
+    EXPECT_LT((K.d - J[e].d).norm(), 1e-12);
+    EXPECT_LT((K.dd - J[e].dd).norm(), 1e-11);
+    EXPECT_LT((K.n.normalized() - J[e].n.normalized()).norm(), 1e-12);
+    EXPECT_NEAR(K.rho, J[e].rho, 1e-12);
+    EXPECT_NEAR(K.drho, J[e].drho, 1e-11);
+  }
+}
+
+// The P-biarc blend: two pieces on [0, 1/2], [1/2, 1] that join C^1 in the
+// circle family and share the circle at 1/2; the minus branch also works.
+TEST(RingedBlendPCurve, BiarcPiecesJoinC1) {
+  Surface pieces[2];
+  int count = 0;
+  RingedBlendOptions o;
+  o.tau = 0.5;
+  ASSERT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::ok);
+  ASSERT_EQ(count, 2);
+  EXPECT_EQ(pieces[0].u1, 0.5);
+  EXPECT_EQ(pieces[1].u0, 0.5);
+  ContinuityReport R;
+  ASSERT_EQ(continuity_report(pieces[0], 0.5, 1.0, pieces[1], 0.5, 1, nullptr, 32, R),
+            Status::ok);
+  EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+  EXPECT_LE(R.circle_jump[0], 1e-12);
+  EXPECT_LE(R.circle_jump[1], 1e-10);
+  o.tau = 0;
+  o.sign = -1;
+  EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::ok);
+  o.sign = 2;
+  EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::invalid_argument);
+}
+
+// A blend between two ringed surfaces of the library: R1 of Example 4.1
+// (48) (rational: d1 = (2t - 6, 2t^2 - 5, t^3), rho1 = t^2/4 + 1,
+// n1 = (1, t, t), c1 by Prop. 3.2 with v = (0, 1, 1)/sqrt 2) and a second
+// one of the same kind moved away; the blend (any projection direction v)
+// meets both C^1 in the circle family (the continuity report).
+TEST(RingedBlendPCurve, JoinsLibrarySurfacesC1) {
+  auto ringed = [](const Vec3d& shift, Surface& S) {
+    RationalCurve d, n, c;
+    const double dc[12] = {-6 + shift.x(), -5 + shift.y(), shift.z(), 2, 0, 0, 0, 2, 0, 0, 0, 1};
+    const double nc[6] = {1, 0, 0, 0, 1, 1};
+    ASSERT_EQ(make_polynomial_curve(3, dc, d), Status::ok);
+    ASSERT_EQ(make_polynomial_curve(1, nc, n), Status::ok);
+    RationalField f;
+    ASSERT_EQ(projection_field(n, Vec3d(0, 1, 1).normalized(), f), Status::ok);
+    ASSERT_EQ(ringed_curve(d, poly({1, 0, 0.25}), CurvePoly(1.0), f, c), Status::ok);
+    ASSERT_EQ(make_ringed(d, n, c, nullptr, 0.0, 1.0, S), Status::ok);
+  };
+  Surface A, B;
+  ringed(Vec3d(0, 0, 0), A);
+  ringed(Vec3d(9, 2, -3), B);
+  RingedJet a, b;
+  ASSERT_EQ(ringed_jet(A, 1.0, a), Status::ok);
+  ASSERT_EQ(ringed_jet(B, 0.0, b), Status::ok);
+  EXPECT_LT((a.d - Vec3d(-4, -3, 1)).norm(), 1e-14);  // d1(1) as in the notes
+  EXPECT_NEAR(a.rho, 1.25, 1e-14);
+  for (const Vec3d& v : {Vec3d(0, 0, 1), Vec3d(Vec3d(1, 2, 2) / 3.0)}) {
+    RingedBlendOptions o;
+    o.v = v;
+    Surface P[2];
+    int count = 0;
+    ASSERT_EQ(make_ringed_pcurve_blend(a, b, o, P, count), Status::ok);
+    ContinuityReport R;
+    ASSERT_EQ(continuity_report(A, 1.0, 1.0, P[0], 0.0, 1, nullptr, 32, R), Status::ok);
+    EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+    EXPECT_LE(R.circle_jump[0], 1e-12);
+    EXPECT_LE(R.circle_jump[1], 1e-10);
+    ASSERT_EQ(continuity_report(B, 0.0, 1.0, P[0], 1.0, 1, nullptr, 32, R), Status::ok);
+    EXPECT_LE(R.max_gap, 1e-12 * R.point_scale);
+    EXPECT_LE(R.circle_jump[1], 1e-10);
+  }
+}
