@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/,
-fuzz_lines/ and fuzz_blend/.
+fuzz_lines/, fuzz_blend/ and fuzz_ringed/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -1895,6 +1895,120 @@ def optimize_seeds(l1, l2):
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_ringed
+
+
+class RingedEncoder(Encoder):
+    """Mirrors fuzz_ringed.cpp: handler flag, ops (create / blend)."""
+
+    def __init__(self, ops, handler=True):
+        super().__init__()
+        self.flag(handler)
+        self.range(1, 8, len(ops))
+        for op in ops:
+            op(self)
+
+    def curve(self, spec):
+        """spec: None (NULL), ("poly", deg, 12 values), ("point", xyz),
+        ("element", p, t)."""
+        if spec is None:
+            self.range(0, 4, 4)
+            return
+        kind = spec[0]
+        code = {"poly": 0, "point": 2, "element": 3}[kind]
+        self.range(0, 4, code)
+        self.rarely(False)
+        vals = list(spec[-1]) if kind != "element" else list(spec[1]) + list(spec[2])
+        vals = (vals + [0] * 12)[:12]
+        self.fill(vals, 1)
+        if kind == "poly":
+            self.range(0, 3, spec[1])
+
+    def create(self, d, n, c, domain=None, null_out=False):
+        self.flag(False)  # op_create
+        self.curve(d)
+        self.curve(n)
+        self.curve(c)
+        self.flag(domain is not None)
+        if domain is not None:
+            self.range(0, 2, 1)
+            self.fill(domain, 1)
+        self.rarely(null_out)
+
+    def jet(self, j, rho_abs=True):
+        self.rarely(False)
+        self.fill(list(j["d"]) + list(j["dd"]) + list(j["n"]) + list(j["dn"]) +
+                  [j["rho"], j["drho"]], 1)
+        self.flag(rho_abs)
+
+    def blend(self, a, b, sign=1, tau=0.0, v=None, null_options=False, nulls=0):
+        self.flag(True)  # op_blend
+        self.jet(a)
+        self.jet(b)
+        self.rarely(null_options)
+        if not null_options:
+            if sign == 1:
+                self.range(0, 3, 0)
+            elif sign == -1:
+                self.range(0, 3, 1)
+            else:
+                self.range(0, 3, 2)
+                self.range(-3, 3, sign)
+            if tau == 0.0:
+                self.range(0, 3, 0)
+            elif tau * 16 == int(tau * 16) and 0 < tau < 1:
+                self.range(0, 3, 1)
+                self.range(1, 15, int(tau * 16))
+            else:
+                self.range(0, 3, 2)
+                self.moderate(tau)
+            self.flag(v is not None)
+            if v is not None:
+                self.flag(False)
+                self.fill(v, 1)
+        self.rarely(nulls != 0)
+        if nulls:
+            self.range(1, 4, nulls)
+
+
+def ringed_seeds():
+    ex41_a = {"d": (-4, -3, 1), "dd": (2, 4, 3), "n": (1, 1, 1), "dn": (0, 1, 1),
+              "rho": 1.25, "drho": 0.5}
+    ex41_b = {"d": (0, 0, 0), "dd": (3, 1, 1), "n": (4, 0, 0), "dn": (0, 1, 1),
+              "rho": 2, "drho": 1}
+    seeds = {}
+    # Example 4.1 (seed 001 §4): degree 6, both signs, the P-biarc, another v.
+    seeds["seed-example41"] = RingedEncoder([
+        lambda e: e.blend(ex41_a, ex41_b),
+        lambda e: e.blend(ex41_a, ex41_b, sign=-1),
+        lambda e: e.blend(ex41_a, ex41_b, tau=0.5),
+        lambda e: e.blend(ex41_a, ex41_b, v=(1, 2, 2)),
+    ]).data()
+    # Hostile options: sign 0, tau 1.5, n parallel to v, NULLs.
+    seeds["seed-hostile-blend"] = RingedEncoder([
+        lambda e: e.blend(ex41_a, ex41_b, sign=0),
+        lambda e: e.blend(ex41_a, ex41_b, tau=1.5),
+        lambda e: e.blend(ex41_a, ex41_b, v=(4, 0, 0)),
+        lambda e: e.blend(ex41_a, ex41_b, v=(0, 0, 0)),
+        lambda e: e.blend(ex41_a, ex41_b, null_options=True, nulls=3),
+    ], handler=False).data()
+    # (d, n, c): a cylinder (d = line, n = point, c = line), a cubic
+    # directrix, a line element and a NULL curve.
+    seeds["seed-create"] = RingedEncoder([
+        lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("point", (0, 0, 1)),
+                           ("poly", 1, (1, 0, 0, 0, 0, 1))),
+        lambda e: e.create(("poly", 3, (0, 0, 0, 1, 0.5, 0, 0, 0.25, 1, 0, 0, 0.125)),
+                           ("poly", 1, (1, 0, 0, 0, 1, 1)),
+                           ("poly", 1, (0, -1, 1, 2, -1, 1)), domain=(-1, 1)),
+        lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("element", (0, 0, 0), (0, 0, 1)),
+                           ("poly", 1, (1, 0, 0, 0, 0, 1))),
+        lambda e: e.create(None, ("point", (0, 0, 1)), ("point", (1, 0, 0))),
+        lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("point", (0, 0, 0)),
+                           ("poly", 1, (1, 0, 0, 0, 0, 1))),
+    ]).data()
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -1939,4 +2053,5 @@ if __name__ == "__main__":
     write("fuzz_darboux", darboux_seeds())
     write("fuzz_lines", lines_seeds())
     write("fuzz_blend", blend_seeds())
+    write("fuzz_ringed", ringed_seeds())
     write_dictionary()

@@ -67,7 +67,7 @@ Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
 template <class Make>
 Outcome three_curve_surface(const char* fn, cyc_context* ctx, const cyc_curve* const (&in)[3],
                             const cyc_mobius* f, double u0, cyc_surface** out,
-                            const char* invalid, Make&& make) {
+                            const char* invalid, const char* dependent, Make&& make) {
   for (int i = 0; i < 3; ++i)
     if (!in[i]) return fail(CYC_E_NULL_ARGUMENT, "%s: input curve %d of 3 is NULL", fn, i + 1);
   REQUIRE(out);
@@ -77,6 +77,8 @@ Outcome three_curve_surface(const char* fn, cyc_context* ctx, const cyc_curve* c
   double bad_u = u0;
   const Status s = make(in[0]->curve, in[1]->curve, in[2]->curve, f ? &m : nullptr, S, &bad_u);
   if (s == Status::invalid_argument) return fail(int(s), "%s: %s", fn, invalid);
+  if (s == Status::dependent_planes && dependent)
+    return fail(int(s), "%s: %s (at u = %.17g)", fn, dependent, bad_u);
   if (s != Status::ok) {
     if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
     return from_core_at(fn, s, bad_u);
@@ -351,7 +353,7 @@ int cyc_prrs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
   return run(ctx, fn, [&] {
     return three_curve_surface(
         fn, ctx, {p1, p2, p3}, f, u0, out,
-        "inputs must be curves or points, not all points and no line elements",
+        "inputs must be curves or points, not all points and no line elements", nullptr,
         [&](const RationalCurve& a, const RationalCurve& b, const RationalCurve& c,
             const Mobius* m, Surface& S, double* bad) {
           return make_prrs(a, b, c, m, u0, u1, S, bad);
@@ -367,6 +369,7 @@ int cyc_ringed_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
     return three_curve_surface(
         fn, ctx, {d, n, c}, f, u0, out,
         "d, n and c must be curves or points, not line elements",
+        "the orientation function n vanishes: no circle plane",
         [&](const RationalCurve& a, const RationalCurve& b, const RationalCurve& cc,
             const Mobius* m, Surface& S, double* bad) {
           return make_ringed(a, b, cc, m, u0, u1, S, bad);

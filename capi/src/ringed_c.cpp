@@ -79,6 +79,10 @@ int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc
         s != Status::ok) {
       if (s == Status::not_pythagorean)
         return fail(int(s), "%s: %s (n is parallel to v at an end)", fn, explain(s));
+      if (s == Status::bad_domain)
+        return fail(int(s), "%s: tau = %.17g is neither 0 nor in (0, 1)", fn, o.tau);
+      if (s == Status::invalid_argument)
+        return fail(int(s), "%s: the projection direction v is zero", fn);
       return located(s) && std::isfinite(bad_u) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
     }
     cyc_surface* h[2] = {nullptr, nullptr};

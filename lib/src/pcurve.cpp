@@ -347,6 +347,7 @@ Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
       return Status::not_finite;
   if (!input_ok(options.v) || !input_ok(options.tau)) return Status::not_finite;
   if (!(options.v.norm() > 0)) return Status::invalid_argument;
+  if (options.tau != 0.0 && !(options.tau > 0 && options.tau < 1)) return Status::bad_domain;
   const Eigen::Matrix3d M = to_e3(options.v.normalized());
   // Data in the frame where v = e3 (38), (39).
   const Vec3d d0 = M * a.d, dd0 = M * a.dd, n0 = M * a.n, dn0 = M * a.dn;

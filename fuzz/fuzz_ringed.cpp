@@ -1,0 +1,270 @@
+// Fuzz target of the ringed surfaces (d, n, rho) of the C ABI (seed 001,
+// SPEC §8f, issue 5): cyc_ringed_create from fuzzed curves (polynomials of
+// degree 0..3, points, line elements, NULL), cyc_blend_ringed_pcurve on
+// fuzzed Hermite jets and options (sign, tau, v; NULL options / pieces /
+// count / jets), and cyc_surface_ringed_jet on what was built.
+//
+// Oracles:
+//  - every status is known, never CYC_E_INTERNAL; last status/message and
+//    the error handler agree with it (fz::check_call);
+//  - documented statuses for the validation errors: NULL pointers give
+//    CYC_E_NULL_ARGUMENT, line elements CYC_E_INVALID_ARGUMENT, a sign other
+//    than +-1 CYC_E_INVALID_ARGUMENT, tau outside [0, 1) (finite)
+//    CYC_E_BAD_DOMAIN, non-finite or > 1e100 data CYC_E_NOT_FINITE;
+//  - on error the out handles, *count and the jet are untouched;
+//  - on OK: kind CYC_SURFACE_RINGED, the domain as asked ([0, 1], or split
+//    at tau), finite points at 5 x 3 samples, identical bits for a second
+//    identical call; for moderate data the blend's jets at t = 0 and t = 1
+//    reproduce the data (d and rho to 1e-7 of the data's scale) unless the
+//    join is ill-conditioned (|d'| beyond 1e6 times the scale).
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "fuzz_common.hpp"
+
+namespace {
+
+using fz::Input;
+
+cyc_surface* const kSentinel = reinterpret_cast<cyc_surface*>(uintptr_t(0x5eed0bad0000ull));
+
+struct Ctx {
+  cyc_context* ctx = nullptr;
+  fz::HandlerLog log;
+  fz::HandlerLog* logp = nullptr;
+  void check(const char* fn, int s) { fz::check_call(fn, ctx, s, logp); }
+};
+
+// A curve for d, n or c: polynomial of degree 0..3 (moderate or wild
+// coefficients), a point, a line element, or none (NULL).
+cyc_curve* make_curve(Input& in, Ctx& c, bool& line_element, bool& bad_input) {
+  cyc_curve* out = nullptr;
+  const int kind = in.range(0, 4);
+  double xyz[12];
+  if (kind == 4) return nullptr;
+  const bool wild = in.rarely();
+  in.fill(xyz, 12, wild ? 0 : 1);
+  int s = CYC_OK;
+  if (kind <= 1) {
+    const int deg = kind == 0 ? in.range(0, 3) : 1;
+    s = cyc_curve_create_polynomial(c.ctx, deg, xyz, 3, &out);
+  } else if (kind == 2) {
+    s = cyc_curve_create_point(c.ctx, xyz, &out);
+  } else {
+    s = cyc_curve_create_line_element(c.ctx, xyz, xyz + 3, &out);
+    line_element = s == CYC_OK;
+  }
+  c.check("cyc_curve_create_*", s);
+  if (s != CYC_OK) {
+    bad_input = true;
+    return nullptr;
+  }
+  return out;
+}
+
+// Points at 5 x 3 samples are finite; the same for a second handle.
+void check_points(Ctx& c, const cyc_surface* A, const cyc_surface* B, const char* fn) {
+  double u0 = 0, u1 = 0;
+  const int sd = cyc_surface_domain(c.ctx, A, &u0, &u1);
+  c.check("cyc_surface_domain", sd);
+  for (int i = 0; i <= 4; ++i) {
+    const double u = i == 4 ? u1 : u0 + (u1 - u0) * i / 4.0;
+    for (double v : {0.0, 1.0, -3.0}) {
+      double X[3], Y[3];
+      fz::fill_sentinel(X, 3);
+      fz::fill_sentinel(Y, 3);
+      const int a = cyc_surface_eval(c.ctx, A, u, v, X, nullptr, nullptr, nullptr);
+      c.check("cyc_surface_eval", a);
+      if (a == CYC_OK) FZ_CHECK(fz::finite3(X), "%s: eval OK with a non-finite point", fn);
+      if (!B) continue;
+      const int b = cyc_surface_eval(c.ctx, B, u, v, Y, nullptr, nullptr, nullptr);
+      c.check("cyc_surface_eval", b);
+      FZ_CHECK(a == b && std::memcmp(X, Y, sizeof X) == 0, "%s: not deterministic at u %g", fn,
+               u);
+    }
+  }
+}
+
+void op_create(Input& in, Ctx& c) {
+  bool le = false, bad = false;
+  cyc_curve* d = make_curve(in, c, le, bad);
+  cyc_curve* n = make_curve(in, c, le, bad);
+  cyc_curve* k = make_curve(in, c, le, bad);
+  double u[2] = {0, 1};
+  if (in.flag()) in.fill(u, 2, in.range(0, 2));
+  const bool null_out = in.rarely();
+  cyc_surface* out = kSentinel;
+  FZ_LOG("cyc_ringed_create d %p n %p c %p [%a, %a]", (void*)d, (void*)n, (void*)k, u[0], u[1]);
+  const int s = cyc_ringed_create(c.ctx, d, n, k, nullptr, u[0], u[1], null_out ? nullptr : &out);
+  c.check("cyc_ringed_create", s);
+  if (!d || !n || !k || null_out)
+    FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "cyc_ringed_create: NULL gives %s", cyc_status_name(s));
+  else if (le)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "cyc_ringed_create: line element gives %s",
+             cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(out == kSentinel, "cyc_ringed_create: *out written on error");
+  } else {
+    int kind = 0;
+    c.check("cyc_surface_kind", cyc_surface_kind(c.ctx, out, &kind));
+    FZ_CHECK(kind == CYC_SURFACE_RINGED, "cyc_ringed_create: kind %d", kind);
+    check_points(c, out, nullptr, "cyc_ringed_create");
+    cyc_ringed_jet J;
+    std::memset(&J, 0x5a, sizeof J);
+    const cyc_ringed_jet J0 = J;
+    const int sj = cyc_surface_ringed_jet(c.ctx, out, u[0] + (u[1] - u[0]) * 0.5, &J);
+    c.check("cyc_surface_ringed_jet", sj);
+    if (sj != CYC_OK)
+      FZ_CHECK(std::memcmp(&J, &J0, sizeof J) == 0, "ringed_jet wrote on error");
+    else
+      FZ_CHECK(std::isfinite(J.rho) && std::isfinite(J.drho) && fz::finite3(J.d) &&
+                   fz::finite3(J.dd) && fz::finite3(J.n) && fz::finite3(J.dn),
+               "ringed_jet OK with non-finite values");
+    cyc_surface_destroy(c.ctx, out);
+  }
+  cyc_curve_destroy(c.ctx, d);
+  cyc_curve_destroy(c.ctx, n);
+  cyc_curve_destroy(c.ctx, k);
+}
+
+// A jet: moderate values (or wild ones, rarely); rho positive mostly.
+bool fill_jet(Input& in, cyc_ringed_jet& J) {
+  const bool wild = in.rarely();
+  double v[14];
+  in.fill(v, 14, wild ? 0 : 1);
+  std::memcpy(J.d, v, sizeof J.d);
+  std::memcpy(J.dd, v + 3, sizeof J.dd);
+  std::memcpy(J.n, v + 6, sizeof J.n);
+  std::memcpy(J.dn, v + 9, sizeof J.dn);
+  J.rho = in.flag() ? std::abs(v[12]) : v[12];
+  J.drho = v[13];
+  return !wild;
+}
+
+bool bad_value(double x) { return !(std::abs(x) <= 1e100); }
+
+void op_blend(Input& in, Ctx& c) {
+  cyc_ringed_jet a, b;
+  bool moderate = fill_jet(in, a);
+  moderate = fill_jet(in, b) && moderate;
+  cyc_pcurve_blend_options o;
+  cyc_pcurve_blend_options_init(&o);
+  const bool null_options = in.rarely();
+  if (!null_options) {
+    switch (in.range(0, 3)) {
+      case 0: break;
+      case 1: o.sign = -1; break;
+      default: o.sign = in.range(-3, 3); break;
+    }
+    switch (in.range(0, 3)) {
+      case 0: break;
+      case 1: o.tau = in.range(1, 15) / 16.0; break;
+      case 2: o.tau = in.moderate(); break;
+      default: o.tau = in.wild(); break;
+    }
+    if (in.flag()) in.fill(o.v, 3, in.flag() ? 0 : 1);
+  }
+  const int nulls = in.rarely() ? in.range(1, 4) : 0;  // a, b, pieces, count
+  cyc_surface* pieces[2] = {kSentinel, kSentinel};
+  int count = -7;
+  FZ_LOG("cyc_blend_ringed_pcurve sign %d tau %a v %a %a %a nulls %d", o.sign, o.tau, o.v[0],
+         o.v[1], o.v[2], nulls);
+  auto call = [&](cyc_surface** p, int* n) {
+    return cyc_blend_ringed_pcurve(c.ctx, nulls == 1 ? nullptr : &a, nulls == 2 ? nullptr : &b,
+                                   null_options ? nullptr : &o, nulls == 3 ? nullptr : p,
+                                   nulls == 4 ? nullptr : n);
+  };
+  const int s = call(pieces, &count);
+  c.check("cyc_blend_ringed_pcurve", s);
+  bool nonfinite = false;
+  for (const cyc_ringed_jet* J : {&a, &b}) {
+    for (int j = 0; j < 3; ++j)
+      nonfinite = nonfinite || bad_value(J->d[j]) || bad_value(J->dd[j]) ||
+                  bad_value(J->n[j]) || bad_value(J->dn[j]);
+    nonfinite = nonfinite || bad_value(J->rho) || bad_value(J->drho);
+  }
+  if (!null_options)
+    for (int j = 0; j < 3; ++j) nonfinite = nonfinite || bad_value(o.v[j]);
+  if (!null_options) nonfinite = nonfinite || bad_value(o.tau);
+  if (nulls)
+    FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "NULL gives %s", cyc_status_name(s));
+  else if (!null_options && o.sign != 1 && o.sign != -1)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "sign %d gives %s", o.sign, cyc_status_name(s));
+  else if (nonfinite)
+    FZ_CHECK(s == CYC_E_NOT_FINITE, "non-finite data give %s", cyc_status_name(s));
+  else if (!null_options && o.v[0] == 0 && o.v[1] == 0 && o.v[2] == 0)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "v = 0 gives %s", cyc_status_name(s));
+  else if (!null_options && (o.tau < 0 || o.tau >= 1))
+    FZ_CHECK(s == CYC_E_BAD_DOMAIN, "tau %g gives %s", o.tau, cyc_status_name(s));
+  if (s == CYC_E_NOT_FINITE) FZ_CHECK(nonfinite, "NOT_FINITE for finite data");
+  if (s != CYC_OK) {
+    FZ_CHECK(pieces[0] == kSentinel && pieces[1] == kSentinel && count == -7,
+             "outputs written on error");
+    return;
+  }
+  const double tau = null_options ? 0.0 : o.tau;
+  FZ_CHECK(count == (tau == 0.0 ? 1 : 2), "count %d for tau %g", count, tau);
+  cyc_surface* again[2] = {nullptr, nullptr};
+  int count2 = 0;
+  const int s2 = call(again, &count2);
+  c.check("cyc_blend_ringed_pcurve", s2);
+  FZ_CHECK(s2 == CYC_OK && count2 == count, "second call differs");
+  for (int k = 0; k < count; ++k) {
+    int kind = 0;
+    c.check("cyc_surface_kind", cyc_surface_kind(c.ctx, pieces[k], &kind));
+    FZ_CHECK(kind == CYC_SURFACE_RINGED, "piece kind %d", kind);
+    double u0 = 0, u1 = 0;
+    c.check("cyc_surface_domain", cyc_surface_domain(c.ctx, pieces[k], &u0, &u1));
+    const double lo = k == 0 ? 0.0 : tau, hi = count == 1 || k == 1 ? 1.0 : tau;
+    FZ_CHECK(u0 == lo && u1 == hi, "piece %d domain [%g, %g]", k, u0, u1);
+    check_points(c, pieces[k], again[k], "cyc_blend_ringed_pcurve");
+  }
+  // Moderate data: the ends reproduce d and rho (C^0 of the circle family).
+  if (moderate) {
+    const cyc_ringed_jet* data[2] = {&a, &b};
+    for (int e = 0; e < 2; ++e) {
+      cyc_ringed_jet K;
+      const int sj = cyc_surface_ringed_jet(c.ctx, pieces[e ? count - 1 : 0], double(e), &K);
+      c.check("cyc_surface_ringed_jet", sj);
+      if (sj != CYC_OK) continue;
+      const cyc_ringed_jet& J = *data[e];
+      const double scale = 1 + fz::norm3(J.d) + fz::norm3(J.dd) + std::abs(J.rho);
+      if (!(fz::norm3(K.dd) <= 1e6 * scale)) continue;  // ill-conditioned: not judged
+      const double dd[3] = {K.d[0] - J.d[0], K.d[1] - J.d[1], K.d[2] - J.d[2]};
+      FZ_CHECK(fz::norm3(dd) <= 1e-7 * scale, "end %d: d off by %g (scale %g)", e, fz::norm3(dd),
+               scale);
+      FZ_CHECK(std::abs(K.rho - std::abs(J.rho)) <= 1e-7 * scale, "end %d: rho %g vs %g", e,
+               K.rho, J.rho);
+    }
+  }
+  for (int k = 0; k < count; ++k) {
+    cyc_surface_destroy(c.ctx, pieces[k]);
+    cyc_surface_destroy(c.ctx, again[k]);
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  Input in(data, size);
+  Ctx c;
+  FZ_CHECK(cyc_context_create(nullptr, &c.ctx) == CYC_OK, "context");
+  if (in.flag()) {
+    FZ_CHECK(cyc_context_set_error_handler(c.ctx, &fz::HandlerLog::callback, &c.log) == CYC_OK,
+             "handler");
+    c.logp = &c.log;
+  }
+  const int nops = in.range(1, 8);
+  for (int i = 0; i < nops; ++i) {
+    if (in.flag())
+      op_blend(in, c);
+    else
+      op_create(in, c);
+  }
+  FZ_CHECK(cyc_ringed_create(nullptr, nullptr, nullptr, nullptr, nullptr, 0, 1, nullptr) ==
+               CYC_E_NULL_ARGUMENT,
+           "cyc_ringed_create(NULL context)");
+  cyc_context_destroy(c.ctx);
+  return 0;
+}
