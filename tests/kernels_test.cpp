@@ -62,7 +62,8 @@ bool same(const PointResult& a, const PointResult& b, int flags) {
 }
 
 // Both variants give identical bits (SPEC §1b: no FMA contraction), the
-// compiled-frame row and the one-kernel fast path give identical bits, and
+// compiled-frame row, the one-kernel fast path and what Surface::eval's
+// kernel writes give identical bits, and
 // these agree with the reference frames (plane intersection) to 1e-11.
 TEST(Kernels, VariantsAndFastPathsAgreeWithTheReference) {
   std::vector<const Kernels*> variants = {&baseline_kernels()};
@@ -94,6 +95,14 @@ TEST(Kernels, VariantsAndFastPathsAgreeWithTheReference) {
             expect_close(want, fast_point, f, 1e-11);
             ASSERT_TRUE(K->frame_point[f](s.compiled, f4, u, v, direct));
             EXPECT_TRUE(same(fast_point, direct, f)) << K->isa << " f=" << f << " u=" << u;
+            // Surface::eval's kernel writes exactly these results.
+            PointResult written;
+            const EvalOut out{written.x, (f & 8) ? written.xu : nullptr,
+                              (f & 4) ? written.xv : nullptr, (f & 2) ? written.n : nullptr};
+            Status st = Status::internal_error;
+            ASSERT_TRUE(K->frame_eval[f](s.compiled, f4, u, v, out, st));
+            ASSERT_EQ(st, Status::ok) << K->isa << " f=" << f << " u=" << u << " v=" << v;
+            EXPECT_TRUE(same(direct, written, f)) << K->isa << " f=" << f << " u=" << u;
           }
         }
       }

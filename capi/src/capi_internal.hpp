@@ -163,17 +163,21 @@ inline bool located(Status s) {
          s == Status::singular_point || s == Status::degenerate_circle_parameter;
 }
 
+// Record success in the context (no message).
+inline int succeed(cyc_context* ctx) {
+  ctx->last_status = CYC_OK;
+  ctx->message[0] = '\0';  // no 1 KiB copy on the hot path
+  return CYC_OK;
+}
+
 // The one guard every entry point runs through.
 template <class Body>
 int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
   if (!ctx) return CYC_E_NULL_ARGUMENT;
   try {
     const Outcome o = body();
+    if (o.status == CYC_OK) return succeed(ctx);
     ctx->last_status = o.status;
-    if (o.status == CYC_OK) {
-      ctx->message[0] = '\0';  // no 1 KiB copy on the hot path
-      return CYC_OK;
-    }
     std::memcpy(ctx->message, o.text, std::strlen(o.text) + 1);
   } catch (const std::bad_alloc&) {
     ctx->last_status = CYC_E_OUT_OF_MEMORY;

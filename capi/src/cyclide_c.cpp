@@ -402,19 +402,38 @@ int cyc_surface_domain(cyc_context* ctx, const cyc_surface* surface, double* u0,
   });
 }
 
-int cyc_surface_eval(cyc_context* ctx, const cyc_surface* surface, double u, double v,
-                     double point[3], double du[3], double dv[3], double normal[3]) {
+namespace {
+// The guarded path of cyc_surface_eval: argument errors, and evaluation
+// errors (status s) with their message and the error handler. Kept out of
+// line so that the hot path stays small.
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+int surface_eval_error(cyc_context* ctx, const cyc_surface* surface, double u, double v,
+                       Status s) {
   const char* fn = "cyc_surface_eval";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
-    if (!point && !du && !dv && !normal)
-      return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
-    // Surface::eval writes the outputs only on success.
-    if (Status s = surface->surface.eval(u, v, EvalOut{point, du, dv, normal});
-        s != Status::ok)
-      return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
-    return ok();
+    if (s == Status::ok) return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
+    return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
   });
+}
+}  // namespace
+
+// Single points are the hottest entry point (SPEC §1b): with valid
+// arguments it calls the evaluator directly instead of through the guard's
+// closure. Surface::eval is noexcept (allocation-free, no exceptions), so
+// the guard has nothing to catch here; every error is reported through it.
+int cyc_surface_eval(cyc_context* ctx, const cyc_surface* surface, double u, double v,
+                     double point[3], double du[3], double dv[3], double normal[3]) {
+  if (!ctx) return CYC_E_NULL_ARGUMENT;
+  Status s = Status::ok;  // ok below: no output was requested
+  if (surface && (point || du || dv || normal)) {
+    // Surface::eval writes the outputs only on success.
+    s = surface->surface.eval(u, v, EvalOut{point, du, dv, normal});
+    if (s == Status::ok) return succeed(ctx);
+  }
+  return surface_eval_error(ctx, surface, u, v, s);
 }
 
 int cyc_surface_eval_batch(cyc_context* ctx, const cyc_surface* surface, const double* uv,

@@ -147,7 +147,9 @@ struct CompiledFrame {
     return true;
   }
 
- private:
+  // The two steps row starts with; public for the evaluator's single-point
+  // kernel, which continues from the series on vectors (evaluator.cpp).
+
   // Every lane of so[0..N], sa, sp has magnitude <= kMaxFrameMagnitude.
   template <int N>
   static bool bounded(const Lane4 (&so)[N + 2], const Lane4 (&sa)[N + 1],
@@ -159,6 +161,13 @@ struct CompiledFrame {
       ok &= (so[j] * so[j] <= max2) & (sa[j] * sa[j] <= max2) & (sp[j] * sp[j] <= max2);
     return (ok[0] & ok[1] & ok[2] & ok[3]) != 0;
   }
+
+  // Normalized u-series of o, a, p to order N at u (so has room for the
+  // PRCS spine to order N+1); false if not trusted at u.
+  template <int N>
+  bool series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1], Lane4 (&sp)[N + 1]) const;
+
+ private:
   static double dot(const double (&x)[3], const double (&y)[3]) {
     return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
   }
@@ -167,36 +176,35 @@ struct CompiledFrame {
     z[1] = x[2] * y[0] - x[0] * y[2];
     z[2] = x[0] * y[1] - x[1] * y[0];
   }
-
-  // Normalized u-series of o, a, p to order N at u (so has room for the
-  // PRCS spine to order N+1); false if not trusted at u.
-  template <int N>
-  bool series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1], Lane4 (&sp)[N + 1]) const {
-    if (!valid || !(u >= u0 && u <= u1)) return false;
-    const double t = (u - mid) * inv_half;
-    if (axis_is_spine_derivative) {
-      // o to order N+1; a = o' (normalized coefficients: a_j = (j+1) o_{j+1}).
-      Lane4 r[N + 2];
-      horner4<N + 1>(o, t, inv_half, r);
-      if (!(std::abs(r[0][3]) > det_floor)) return false;
-      quotient4<N + 1>(r, 1.0 / r[0][3], so);
-      for (int j = 0; j <= N; ++j) sa[j] = double(j + 1) * so[j + 1];
-    } else {
-      Lane4 r[N + 1], ra[N + 1];
-      horner4<N>(o, t, inv_half, r);
-      if (!(std::abs(r[0][3]) > det_floor)) return false;
-      horner4<N>(a, t, inv_half, ra);
-      Lane4 q[N + 1];
-      quotient4<N>(r, 1.0 / r[0][3], q);
-      for (int j = 0; j <= N; ++j) so[j] = q[j];
-      quotient4<N>(ra, 1.0 / ra[0][3], sa);
-    }
-    Lane4 rp[N + 1];
-    horner4<N>(p, t, inv_half, rp);
-    quotient4<N>(rp, 1.0 / rp[0][3], sp);
-    return true;
-  }
 };
+
+template <int N>
+bool CompiledFrame::series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1],
+                         Lane4 (&sp)[N + 1]) const {
+  if (!valid || !(u >= u0 && u <= u1)) return false;
+  const double t = (u - mid) * inv_half;
+  if (axis_is_spine_derivative) {
+    // o to order N+1; a = o' (normalized coefficients: a_j = (j+1) o_{j+1}).
+    Lane4 r[N + 2];
+    horner4<N + 1>(o, t, inv_half, r);
+    if (!(std::abs(r[0][3]) > det_floor)) return false;
+    quotient4<N + 1>(r, 1.0 / r[0][3], so);
+    for (int j = 0; j <= N; ++j) sa[j] = double(j + 1) * so[j + 1];
+  } else {
+    Lane4 r[N + 1], ra[N + 1];
+    horner4<N>(o, t, inv_half, r);
+    if (!(std::abs(r[0][3]) > det_floor)) return false;
+    horner4<N>(a, t, inv_half, ra);
+    Lane4 q[N + 1];
+    quotient4<N>(r, 1.0 / r[0][3], q);
+    for (int j = 0; j <= N; ++j) so[j] = q[j];
+    quotient4<N>(ra, 1.0 / ra[0][3], sa);
+  }
+  Lane4 rp[N + 1];
+  horner4<N>(p, t, inv_half, rp);
+  quotient4<N>(rp, 1.0 / rp[0][3], sp);
+  return true;
+}
 
 }  // namespace v0
 }  // namespace cyclide

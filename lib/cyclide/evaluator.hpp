@@ -24,6 +24,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "cyclide/status.hpp"
+
 namespace cyclide {
 inline namespace v0 {
 
@@ -40,6 +42,14 @@ struct CircleRow {
   RotationData r;    // values
   RotationData r_u;  // d/du of every field (when computed)
   double inv_radius = 0;  // canal: 1 / r(u), for the normal (x - s)/r
+};
+
+// What an evaluation writes (null = not wanted).
+struct EvalOut {
+  double* point = nullptr;
+  double* du = nullptr;
+  double* dv = nullptr;
+  double* normal = nullptr;
 };
 
 // Caller-owned strided output of 3-vectors: element i at data + i * stride.
@@ -66,6 +76,12 @@ CYC_ALWAYS_INLINE void circle_parameter(double v, double& s1, double& s0) {
   const double w = std::abs(v) <= 1.0 ? 1.0 : 0.0, w1 = 1.0 - w;
   s1 = w * v + w1;
   s0 = w + w1 / (w1 * v + w);
+}
+
+// 0 if x's components are finite, NaN otherwise (x - x is NaN for Inf and
+// NaN): a sum of these tests many values with one comparison, no branches.
+CYC_ALWAYS_INLINE double nonfinite3(const double (&x)[3]) {
+  return (x[0] - x[0]) + (x[1] - x[1]) + (x[2] - x[2]);
 }
 
 // One point's results (only the wanted ones are computed).
@@ -173,6 +189,12 @@ using PointFn = void (*)(const CircleRow& row, double v, PointResult& out);
 struct CompiledFrame;
 using FramePointFn = bool (*)(const CompiledFrame& frame, const double (&f4)[4], double u,
                               double v, PointResult& out);
+// FramePointFn writing the wanted outputs itself (Surface::eval's fast
+// path): false where the compiled frame is not trusted at u; otherwise
+// status is ok, singular_point or numerical_overflow, and out is written
+// only when it is ok.
+using FrameEvalFn = bool (*)(const CompiledFrame& frame, const double (&f4)[4], double u,
+                             double v, const EvalOut& out, Status& status);
 // The circle row of a compiled frame (CompiledFrame::row), with or without
 // u-derivatives.
 using FrameRowFn = bool (*)(const CompiledFrame& frame, const double (&f4)[4], double u,
@@ -192,6 +214,7 @@ struct Kernels {
   GridBlockFn grid[16];
   PointFn point[16];
   FramePointFn frame_point[16];
+  FrameEvalFn frame_eval[16];
   FrameRowFn frame_row[2];  // [with u-derivatives]
 };
 

@@ -36,14 +36,6 @@ enum class SurfaceKind : int {
                // n and a curve c on it (seed 001 eq. (3))
 };
 
-// What an evaluation writes (null = not wanted).
-struct EvalOut {
-  double* point = nullptr;
-  double* du = nullptr;
-  double* dv = nullptr;
-  double* normal = nullptr;
-};
-
 class Surface {
  public:
   SurfaceKind kind = SurfaceKind::prcs;
@@ -124,7 +116,8 @@ class Surface {
   // x(u,v) and optionally x_u, x_v, unit normal. On error nothing is written.
   // u must satisfy input_ok; v may be any finite double (|v| > 1 is
   // evaluated in 1/v, so v = 1e300 is the generator p(u) to rounding).
-  Status eval(double u, double v, const EvalOut& out) const;
+  // Allocation-free and never throws (the C API calls it without a guard).
+  Status eval(double u, double v, const EvalOut& out) const noexcept;
 
   // Grid x(us[i], vs[j]) at index i * nv + j. Every u and v is validated
   // before anything is written. Normals at singular points (ringed surfaces

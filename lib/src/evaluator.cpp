@@ -20,6 +20,13 @@
 #define CYC_AVX2_TARGET __attribute__((flatten, target("avx2")))
 #endif
 
+// The vector helpers below return vectors by value; they are always
+// inlined, so GCC's note that this ABI differs without AVX concerns no real
+// call.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 #if defined(__GNUC__)
 #define CYC_FLATTEN __attribute__((flatten))
 #else
@@ -187,13 +194,135 @@ CYC_ALWAYS_INLINE void point(const CircleRow& row, double v, PointResult& P) {
   eval_point<DU, DV, NORMAL, CANAL>(R, row.r_u, k, row.inv_radius, s1, s0, P);
 }
 
+// ------------------------------------------------------------ single points
+
+// (x, y, z) of Lane4 vectors (lane 3 is carried along and never read).
+CYC_ALWAYS_INLINE Lane4 splat(double x) { return Lane4{x, x, x, x}; }
+
+// x0 y0 + x1 y1 + x2 y2, summed left to right like the scalar dot products.
+CYC_ALWAYS_INLINE double dot3(const Lane4& x, const Lane4& y) {
+  const Lane4 p = x * y;
+  return p[0] + p[1] + p[2];
+}
+
+// x x y as (y z x)(z x y) - (z x y)(y z x): each lane is the scalar formula.
+CYC_ALWAYS_INLINE Lane4 cross3(const Lane4& x, const Lane4& y) {
+#if defined(__clang__)
+  const Lane4 x1 = __builtin_shufflevector(x, x, 1, 2, 0, 3);
+  const Lane4 x2 = __builtin_shufflevector(x, x, 2, 0, 1, 3);
+  const Lane4 y1 = __builtin_shufflevector(y, y, 1, 2, 0, 3);
+  const Lane4 y2 = __builtin_shufflevector(y, y, 2, 0, 1, 3);
+#else
+  typedef long long M4 __attribute__((vector_size(32)));
+  const Lane4 x1 = __builtin_shuffle(x, M4{1, 2, 0, 3});
+  const Lane4 x2 = __builtin_shuffle(x, M4{2, 0, 1, 3});
+  const Lane4 y1 = __builtin_shuffle(y, M4{1, 2, 0, 3});
+  const Lane4 y2 = __builtin_shuffle(y, M4{2, 0, 1, 3});
+#endif
+  return x1 * y2 - x2 * y1;
+}
+
+CYC_ALWAYS_INLINE void put3(const Lane4& x, double (&dst)[3]) {
+  for (int j = 0; j < 3; ++j) dst[j] = x[j];
+}
+
+// One point straight from a compiled frame: CompiledFrame::row followed by
+// point, operation for operation (so the bits equal the grid's, which goes
+// through the row), but on (x, y, z, w) vectors. The frame's series already
+// come as vectors; one vector operation replaces three scalar ones, and no
+// CircleRow is stored and loaded again (SPEC §1b).
 template <bool DU, bool DV, bool NORMAL, bool CANAL>
 CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4], double u,
                                    double v, PointResult& P) {
-  constexpr bool with_du = DU || (NORMAL && !CANAL);
-  CircleRow row;
-  if (!F.row<with_du, NORMAL && CANAL>(u, f4, row)) return false;
-  point<DU, DV, NORMAL, CANAL>(row, v, P);
+  constexpr bool need_du = DU || (NORMAL && !CANAL);
+  constexpr bool need_dv = DV || (NORMAL && !CANAL);
+  constexpr int N = need_du ? 1 : 0;
+  // The row: rotation data at u (CompiledFrame::row).
+  Lane4 so[N + 2], sa[N + 1], sp[N + 1];
+  if (!F.series<N>(u, so, sa, sp) || !CompiledFrame::bounded<N>(so, sa, sp)) return false;
+  const Lane4 o = so[0], a = sa[0], d = sp[0] - so[0];
+  const double aa = dot3(a, a), dd = dot3(d, d);
+  if (!(aa >= kMinAxisLength * kMinAxisLength) || !(dd > 0)) return false;
+  const double ad = dot3(a, d);
+  const Lane4 axd = cross3(a, d);
+  // The point (eval_point): q = W + G a, x = o + r.
+  const double alpha = f4[0], beta = f4[1], gamma = f4[2], delta = f4[3];
+  double s1, s0;
+  circle_parameter(v, s1, s0);
+  const double W = alpha * s1 + beta * s0, G = gamma * s1 + delta * s0;
+  const double W2 = W * W, G2 = G * G, WG = W * G;
+  const double inv = 1.0 / (W2 + G2 * aa);
+  const double cd = W2 - G2 * aa, ca = 2.0 * G2 * ad, cx = 2.0 * WG;
+  const Lane4 r = (splat(cd) * d + splat(ca) * a + splat(cx) * axd) * splat(inv);
+  put3(o + r, P.x);
+  Lane4 xv{}, xu{};
+  if (need_dv) {  // the rotation rate about a (see eval_point)
+    const double k = 2.0 * (beta * gamma - alpha * delta);
+    xv = splat(k * inv) * cross3(a, r);
+    put3(xv, P.xv_dir);
+    if (DV) put3(splat(s0 * s0) * xv, P.xv);
+  }
+  if (need_du) {
+    // f is constant in u: its u-derivatives are the row's zeros, kept in
+    // the formula so that every rounding matches eval_point's.
+    const double zero = 0.0;
+    const Lane4 o_u = so[N], a_u = sa[N], d_u = sp[N] - so[N];
+    const double aa_u = 2.0 * dot3(a, a_u), ad_u = dot3(a_u, d) + dot3(a, d_u);
+    const Lane4 axd_u = cross3(a_u, d) + cross3(a, d_u);
+    const double Wu = zero * s1 + zero * s0, Gu = zero * s1 + zero * s0;
+    const double W2u = 2.0 * W * Wu, G2u = 2.0 * G * Gu, WGu = Wu * G + W * Gu;
+    const double den_u = W2u + G2u * aa + G2 * aa_u;
+    const double cd_u = W2u - G2u * aa - G2 * aa_u;
+    const double ca_u = 2.0 * (G2u * ad + G2 * ad_u), cx_u = 2.0 * WGu;
+    const Lane4 num_u = splat(cd_u) * d + splat(cd) * d_u + splat(ca_u) * a +
+                        splat(ca) * a_u + splat(cx_u) * axd + splat(cx) * axd_u;
+    xu = o_u + (num_u - splat(den_u) * r) * splat(inv);
+    if (DU) put3(xu, P.xu);
+  }
+  if (NORMAL) {
+    if (CANAL) {  // (x - s)/r
+      put3(r * splat(1.0 / std::sqrt(dd)), P.n);
+      P.singular = 0.0;
+    } else {  // ringed_normal on vectors
+      const Lane4 c = cross3(xu, xv);
+      const double len2 = dot3(c, c), ref2 = dot3(xu, xu) * dot3(xv, xv);
+      const double ok = len2 > kSingularTol * kSingularTol * ref2 && len2 > 0 ? 1.0 : 0.0;
+      put3(c * splat(ok / std::sqrt(len2 + (1.0 - ok))), P.n);
+      P.singular = 1.0 - ok;
+    }
+  }
+  return true;
+}
+
+// frame_point, then the wanted outputs written (all or nothing) with the
+// checks of Surface::eval: singular_point for an undefined normal,
+// numerical_overflow for a non-finite result. What is wanted is known at
+// compile time (the kernel index), except the point itself.
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
+CYC_ALWAYS_INLINE bool frame_eval(const CompiledFrame& F, const double (&f4)[4], double u,
+                                  double v, const EvalOut& out, Status& status) {
+  PointResult P;
+  if (!frame_point<DU, DV, NORMAL, CANAL>(F, f4, u, v, P)) return false;
+  if (NORMAL && !CANAL && P.singular != 0.0) {
+    status = Status::singular_point;
+    return true;
+  }
+  double check = out.point ? nonfinite3(P.x) : 0.0;
+  if (DU) check += nonfinite3(P.xu);
+  if (DV) check += nonfinite3(P.xv);
+  if (NORMAL) check += nonfinite3(P.n);
+  if (!(check == 0.0)) {
+    status = Status::numerical_overflow;
+    return true;
+  }
+  auto put = [](double* dst, const double (&src)[3]) {
+    for (int j = 0; j < 3; ++j) dst[j] = src[j];
+  };
+  if (out.point) put(out.point, P.x);
+  if (DU) put(out.du, P.xu);
+  if (DV) put(out.dv, P.xv);
+  if (NORMAL) put(out.normal, P.n);
+  status = Status::ok;
   return true;
 }
 
@@ -222,13 +351,18 @@ CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4]
                                double v, PointResult& P) {                               \
     return frame_point<DU, DV, NORMAL, CANAL>(F, f4, u, v, P);                           \
   }                                                                                      \
+  template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
+  ATTR bool frame_eval_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,    \
+                              double v, const EvalOut& out, Status& status) {            \
+    return frame_eval<DU, DV, NORMAL, CANAL>(F, f4, u, v, out, status);                  \
+  }                                                                                      \
   template <bool WITH_DU>                                                                \
   ATTR bool frame_row_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,     \
                              CircleRow& row) {                                           \
     return F.row<WITH_DU>(u, f4, row);                                                   \
   }                                                                                      \
   const Kernels k_##NAME = {LABEL, CYC_TABLE(grid_##NAME), CYC_TABLE(point_##NAME),      \
-                            CYC_TABLE(frame_point_##NAME),                               \
+                            CYC_TABLE(frame_point_##NAME), CYC_TABLE(frame_eval_##NAME), \
                             {frame_row_##NAME<false>, frame_row_##NAME<true>}};
 
 CYC_VARIANT(baseline, CYC_FLATTEN, "baseline")

@@ -50,22 +50,26 @@ bool finite3(const Vec3d& v) {
 
 // Write a point's wanted results; singular_point for an undefined normal,
 // numerical_overflow (never expected, see SPEC §3) for non-finite results.
-// Nothing is written on error.
-Status write_point(const PointResult& P, const EvalOut& out, bool canal,
-                   bool zero_singular_normal, bool* singular) {
+// Nothing is written on error. (The compiled-frame fast path of
+// Surface::eval does the same in its kernel: evaluator.cpp, frame_eval.)
+CYC_ALWAYS_INLINE Status write_point(const PointResult& P, const EvalOut& out, bool canal,
+                                     bool zero_singular_normal, bool* singular) {
   const bool sing = out.normal && !canal && P.singular != 0.0;
   if (sing && !zero_singular_normal) return Status::singular_point;
-  double* dst[4] = {out.point, out.du, out.dv, out.normal};
-  const double* src[4] = {P.x, P.xu, P.xv, P.n};
-  bool finite = true;
-  for (int b = 0; b < 4; ++b)
-    if (dst[b])
-      finite &= std::isfinite(src[b][0]) && std::isfinite(src[b][1]) &&
-                std::isfinite(src[b][2]);
-  if (!finite) return Status::numerical_overflow;
-  for (int b = 0; b < 4; ++b)
-    if (dst[b])
-      for (int j = 0; j < 3; ++j) dst[b][j] = src[b][j];
+  double check = 0.0;  // only the wanted results count (the others are not set)
+  if (out.point) check += nonfinite3(P.x);
+  if (out.du) check += nonfinite3(P.xu);
+  if (out.dv) check += nonfinite3(P.xv);
+  if (out.normal) check += nonfinite3(P.n);
+  if (!(check == 0.0)) return Status::numerical_overflow;
+  auto put = [](double* dst, const double (&src)[3]) {
+    if (dst)
+      for (int j = 0; j < 3; ++j) dst[j] = src[j];
+  };
+  put(out.point, P.x);
+  put(out.du, P.xu);
+  put(out.dv, P.xv);
+  put(out.normal, P.n);
   if (singular) *singular = sing;
   return Status::ok;
 }
@@ -107,21 +111,32 @@ Status Surface::row(double u, bool with_du, CircleRow& r) const {
   return Status::ok;
 }
 
-Status Surface::eval(double u, double v, const EvalOut& out) const {
-  if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
-  const bool canal = is_canal_by_construction();
-  if (f_constant) {  // the fast path: compiled frame to point in one kernel
-    double f4[4];
-    constant_f(f4);
-    PointResult P;
-    if (kernels().frame_point[kernel_index(out.du, out.dv, out.normal, canal)](compiled, f4,
-                                                                               u, v, P))
-      return write_point(P, out, canal, false, nullptr);
-  }
+namespace {
+// Surface::eval through the circle row (reference frames, or f varying with
+// u). Out of line: its CircleRow and calls would otherwise make every
+// fast-path call save registers and set up a large stack frame.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+Status eval_by_row(const Surface& S, double u, double v, const EvalOut& out) {
+  const bool canal = S.is_canal_by_construction();
   const bool with_du = out.du || (out.normal && !canal);
   CircleRow r;
-  if (Status st = row(u, with_du, r); st != Status::ok) return st;
-  return eval_one(*this, r, v, out, false, nullptr);
+  if (Status st = S.row(u, with_du, r); st != Status::ok) return st;
+  return eval_one(S, r, v, out, false, nullptr);
+}
+}  // namespace
+
+Status Surface::eval(double u, double v, const EvalOut& out) const noexcept {
+  if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
+  if (f_constant) {  // the fast path: compiled frame to the outputs in one kernel
+    double f4[4];
+    constant_f(f4);
+    Status st;
+    const int k = kernel_index(out.du, out.dv, out.normal, is_canal_by_construction());
+    if (kernels().frame_eval[k](compiled, f4, u, v, out, st)) return st;
+  }
+  return eval_by_row(*this, u, v, out);
 }
 
 namespace {
