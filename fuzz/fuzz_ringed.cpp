@@ -7,8 +7,10 @@
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
 //    the error handler agree with it (fz::check_call);
-//  - documented statuses for the validation errors: NULL pointers give
-//    CYC_E_NULL_ARGUMENT, line elements CYC_E_INVALID_ARGUMENT, a sign other
+//  - documented statuses for the validation errors, in their order: NULL
+//    pointers give CYC_E_NULL_ARGUMENT, a non-finite domain
+//    CYC_E_NOT_FINITE, an empty one CYC_E_BAD_DOMAIN, line elements
+//    CYC_E_INVALID_ARGUMENT, a sign other
 //    than +-1 CYC_E_INVALID_ARGUMENT, tau outside [0, 1) (finite)
 //    CYC_E_BAD_DOMAIN, non-finite or > 1e100 data CYC_E_NOT_FINITE;
 //  - on error the out handles, *count and the jet are untouched;
@@ -100,6 +102,12 @@ void op_create(Input& in, Ctx& c) {
   c.check("cyc_ringed_create", s);
   if (!d || !n || !k || null_out)
     FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "cyc_ringed_create: NULL gives %s", cyc_status_name(s));
+  else if (!(std::abs(u[0]) <= 1e100) || !(std::abs(u[1]) <= 1e100))
+    FZ_CHECK(s == CYC_E_NOT_FINITE, "cyc_ringed_create: domain [%g, %g] gives %s", u[0], u[1],
+             cyc_status_name(s));
+  else if (!(u[1] > u[0]))  // the domain is checked before the curves
+    FZ_CHECK(s == CYC_E_BAD_DOMAIN, "cyc_ringed_create: domain [%g, %g] gives %s", u[0], u[1],
+             cyc_status_name(s));
   else if (le)
     FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "cyc_ringed_create: line element gives %s",
              cyc_status_name(s));

@@ -321,3 +321,19 @@ TEST(RingedBlendPCurve, JoinsLibrarySurfacesC1) {
     EXPECT_LE(R.circle_jump[1], 1e-10);
   }
 }
+
+// fuzz_ringed regress-tiny-tau-overflow: tau = 2^-847 is a valid P-biarc
+// parameter, but w2 of (47) ~ 1/tau overflows the P-curve's coefficients:
+// numerical_overflow, not not_finite (reserved for non-finite inputs).
+TEST(RingedBlendPCurve, RegressionTinyTauIsOverflow) {
+  Surface pieces[2];
+  int count = -7;
+  RingedBlendOptions o;
+  o.tau = std::ldexp(1.0, -847);
+  EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::numerical_overflow);
+  EXPECT_EQ(count, -7);
+  o.tau = NAN;
+  EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::not_finite);
+}

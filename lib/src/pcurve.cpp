@@ -338,6 +338,16 @@ Status polynomial_curve(const CurvePoly (&P)[3], RationalCurve& out) {
 
 }  // namespace
 
+namespace {
+
+Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
+                    Surface (&pieces)[2], int& count, double* bad_u);
+
+}  // namespace
+
+// Validated inputs that the construction cannot carry (e.g. tau = 1e-255:
+// w2 of (47) ~ 1e255, the P-curve's coefficients beyond 1e100) overflow;
+// not_finite stays reserved for non-finite or > 1e100 inputs.
 Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
                                 const RingedBlendOptions& options, Surface (&pieces)[2],
                                 int& count, double* bad_u) {
@@ -346,6 +356,14 @@ Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
         !input_ok(J->rho) || !input_ok(J->drho))
       return Status::not_finite;
   if (!input_ok(options.v) || !input_ok(options.tau)) return Status::not_finite;
+  const Status st = pcurve_blend(a, b, options, pieces, count, bad_u);
+  return st == Status::not_finite ? Status::numerical_overflow : st;
+}
+
+namespace {
+
+Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
+                    Surface (&pieces)[2], int& count, double* bad_u) {
   if (!(options.v.norm() > 0)) return Status::invalid_argument;
   if (options.tau != 0.0 && !(options.tau > 0 && options.tau < 1)) return Status::bad_domain;
   const Eigen::Matrix3d M = to_e3(options.v.normalized());
@@ -400,6 +418,8 @@ Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
   count = m;
   return Status::ok;
 }
+
+}  // namespace
 
 }  // namespace v0
 }  // namespace cyclide
