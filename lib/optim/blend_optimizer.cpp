@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -115,8 +116,8 @@ void curves_at(const Problem& P, const Basis* b, const Vec3<T> (&d)[2][3][kMaxBl
 }
 
 // The blend's circle frame at a node to order 2 (PRCS or PRRS on the
-// series), f = v; false where the planes are dependent (a Ceres step that
-// leaves the valid region is rejected and shortened).
+// series), f = v; false where the planes are dependent (a step that
+// leaves the valid region is halved, then rejected: projected_lm).
 template <class T>
 bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
               CircleFrame<Taylor<T, 2>>& F, T& rd) {
@@ -148,26 +149,66 @@ bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
   return true;
 }
 
-// x(t, z) near the node z as a series in z whose coefficients are series
-// in t. The circle is the rational quadratic x = o + (P0 + P1 v + P2 v^2) /
-// (Q0 + Q1 v + Q2 v^2) of circle_quadratic (one per t node and chart:
-// chart 0 is v = z, f = v; chart 1 is v = 1/z, the same circle with
-// (alpha, beta, gamma, delta) = (0, 1, 1, 0)), so per point only the two
-// quadratics are expanded at z and divided as series.
+// The circle's rational quadratic in one chart, x = o + (P0 + P1 z +
+// P2 z^2) / (Q0 + Q1 z + Q2 z^2), coefficients as t-series of order 2.
+// circle_quadratic of the frame with f = v (alpha = delta = 1, beta = gamma
+// = 0) reduces to P0 = 2 (a.d) a - |a|^2 d, P1 = 2 a x d, P2 = d, Q = (|a|^2,
+// 0, 1); the chart v = 1/z (alpha <-> beta, gamma <-> delta) is the same
+// rational function with the coefficients reversed (multiply by z^2).
 template <class T>
-void point_series2(const CircleQuadratic<Taylor<T, 2>>& C, double z,
-                   Vec3<Taylor<Taylor<T, 2>, 2>>& x) {
+void chart_quadratics(const CircleFrame<Taylor<T, 2>>& F, CircleQuadratic<Taylor<T, 2>> (&C)[2]) {
   using U = Taylor<T, 2>;
-  using Z = Taylor<U, 2>;
-  auto expand = [z](const U& a0, const U& a1, const U& a2) {
-    Z r;
-    r.c[0] = a0 + (a1 + a2 * U(z)) * U(z);
-    r.c[1] = a1 + U(2.0 * z) * a2;
-    r.c[2] = a2;
-    return r;
+  const Vec3<U> d = F.p - F.o;
+  const U aa = F.a.dot(F.a);
+  const U ad = F.a.dot(d);
+  const U two(2.0);
+  const Vec3<U> P0 = (two * ad) * F.a - aa * d, P1 = two * F.a.cross(d);
+  C[0].o = C[1].o = F.o;
+  C[0].P[0] = C[1].P[2] = P0;
+  C[0].P[1] = C[1].P[1] = P1;
+  C[0].P[2] = C[1].P[0] = d;
+  C[0].Q[0] = C[1].Q[2] = aa;
+  C[0].Q[1] = C[1].Q[1] = U(0.0);
+  C[0].Q[2] = C[1].Q[0] = U(1.0);
+}
+
+// x_t, x_tt, x_tz, x_zz of x(t, z) = o(t) + N(t, z) / D(t, z) at the node
+// (t_i, z) from the chart's quadratic (closed-form quotient rule, the
+// t-series coefficients c[k] = d^k/dt^k / k!):
+//   f = N/D, f_t = (N_t - f D_t)/D, f_z = (N_z - f D_z)/D,
+//   f_tt = (N_tt - 2 f_t D_t - f D_tt)/D,
+//   f_tz = (N_tz - f_t D_z - f_z D_t - f D_tz)/D,
+//   f_zz = (N_zz - 2 f_z D_z - f D_zz)/D.
+template <class T>
+struct PointDerivatives {
+  Vec3<T> xt, xtt, xtz, xzz;
+};
+
+template <class T>
+void point_derivatives(const CircleQuadratic<Taylor<T, 2>>& C, double z, PointDerivatives<T>& X) {
+  const T z1(z), z2(z * z), two(2.0), twoz(2.0 * z);
+  auto quad = [&](const Taylor<T, 2>& a0, const Taylor<T, 2>& a1, const Taylor<T, 2>& a2, T* v) {
+    v[0] = a0.c[0] + z1 * a1.c[0] + z2 * a2.c[0];              // value
+    v[1] = a0.c[1] + z1 * a1.c[1] + z2 * a2.c[1];              // d/dt
+    v[2] = two * (a0.c[2] + z1 * a1.c[2] + z2 * a2.c[2]);      // d2/dt2
+    v[3] = a1.c[0] + twoz * a2.c[0];                           // d/dz
+    v[4] = a1.c[1] + twoz * a2.c[1];                           // d2/dtdz
+    v[5] = two * a2.c[0];                                      // d2/dz2
   };
-  const Z den = expand(C.Q[0], C.Q[1], C.Q[2]);
-  for (int j = 0; j < 3; ++j) x[j] = Z(C.o[j]) + expand(C.P[0][j], C.P[1][j], C.P[2][j]) / den;
+  T D[6];
+  quad(C.Q[0], C.Q[1], C.Q[2], D);
+  const T inv = T(1.0) / D[0];
+  for (int j = 0; j < 3; ++j) {
+    T N[6];
+    quad(C.P[0][j], C.P[1][j], C.P[2][j], N);
+    const T f = N[0] * inv;
+    const T ft = (N[1] - f * D[1]) * inv;
+    const T fz = (N[3] - f * D[3]) * inv;
+    X.xt[j] = C.o[j].c[1] + ft;
+    X.xtt[j] = two * C.o[j].c[2] + (N[2] - two * ft * D[1] - f * D[2]) * inv;
+    X.xtz[j] = (N[4] - ft * D[3] - fz * D[1] - f * D[4]) * inv;
+    X.xzz[j] = (N[5] - two * fz * D[3] - f * D[5]) * inv;
+  }
 }
 
 // A point X against the circle of the frame (values): its height h over the
@@ -190,6 +231,17 @@ void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T&
   radial = sqrt_of(T((w - h * n).squaredNorm())) - sqrt_of(G.radius2);
 }
 
+// reparameterize with the series truncated at order K (not kMaxBlendOrder).
+template <class T>
+void reparameterize_k(int K, const Vec3d* dx, const T* jet, Vec3<T>* out) {
+  switch (K) {
+    case 1: return reparameterize_to<1>(K, dx, jet, out);
+    case 2: return reparameterize_to<2>(K, dx, jet, out);
+    case 3: return reparameterize_to<3>(K, dx, jet, out);
+    default: return reparameterize_to<kMaxBlendOrder>(K, dx, jet, out);
+  }
+}
+
 // The residual vector (layout: per t node the determinant hinge, one
 // clearance hinge per obstacle, then per chart and z node 9 fairness and 1
 // speed hinge; then 2 per target). False where a node's frame is
@@ -207,7 +259,7 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
     for (int m = 0; m < P.K; ++m) jet[e][m] = m < P.free ? params[e * P.free + m] : T(P.jet0[e][m]);
   Vec3<T> d[2][3][kMaxBlendOrder + 1];
   for (int e = 0; e < 2; ++e)
-    for (int j = 0; j < P.count; ++j) reparameterize(P.K, P.D[e][j], jet[e], d[e][j]);
+    for (int j = 0; j < P.count; ++j) reparameterize_k(P.K, P.D[e][j], jet[e], d[e][j]);
   const BlendObjective& O = P.obj;
   const T w_reg(std::sqrt(O.regularity)), w_obs(std::sqrt(O.obstacle_weight)),
       w_tgt(std::sqrt(O.target_weight));
@@ -234,25 +286,19 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
       add(&Terms::obstacles, r[k++]);
     }
     CircleQuadratic<Taylor<T, 2>> C[2];
-    C[0] = circle_quadratic(F);
-    {
-      CircleFrame<Taylor<T, 2>> G = F;  // v = 1/z: f = 1/z
-      std::swap(G.alpha, G.beta);
-      std::swap(G.gamma, G.delta);
-      C[1] = circle_quadratic(G);
-    }
+    chart_quadratics(F, C);
     for (int chart = 0; chart < 2; ++chart)
       for (int j = 0; j < P.nz; ++j) {
-        Vec3<Taylor<Taylor<T, 2>, 2>> x;
-        point_series2(C[chart], P.zn[j], x);
+        PointDerivatives<T> X;
+        point_derivatives(C[chart], P.zn[j], X);
         const double wq = std::sqrt(O.fairness * P.tw[i] * half * P.zw[j]) * P.fair_norm;
-        Vec3<T> xt;
+        const T w1(wq), w2(std::sqrt(2.0) * wq);
         for (int c = 0; c < 3; ++c) {
-          xt[c] = x[c].c[0].c[1];
-          r[k + c] = T(2.0 * wq) * x[c].c[0].c[2];                  // x_tt
-          r[k + 3 + c] = T(std::sqrt(2.0) * wq) * x[c].c[1].c[1];   // x_tz
-          r[k + 6 + c] = T(2.0 * wq) * x[c].c[2].c[0];              // x_zz
+          r[k + c] = w1 * X.xtt[c];
+          r[k + 3 + c] = w2 * X.xtz[c];
+          r[k + 6 + c] = w1 * X.xzz[c];
         }
+        const Vec3<T>& xt = X.xt;
         for (int c = 0; c < 9; ++c) add(&Terms::fairness, r[k + c]);
         k += 9;
         const T speed = sqrt_of(T(xt.squaredNorm()));
@@ -278,13 +324,39 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
   return true;
 }
 
+// The cost functor in both Ceres forms: one parameter block of fixed size
+// (AutoDiffCostFunction, Jets exactly as wide as the parameters) and the
+// dynamic form (stride 4) for other counts.
 struct Residuals {
   const Problem* P;
+  template <class T>
+  bool operator()(const T* params, T* r) const {
+    return evaluate(*P, params, r, nullptr);
+  }
   template <class T>
   bool operator()(T const* const* params, T* r) const {
     return evaluate(*P, params[0], r, nullptr);
   }
 };
+
+// The cost function for n = 2 free parameters (free_orders 1, the default
+// for K = 1), 4 (free_orders 2, the default for K >= 2) or 6: Jet<double,
+// n>; others: dynamic Jets of stride 4.
+ceres::CostFunction* make_cost(const Problem& P, int n) {
+  using ceres::AutoDiffCostFunction;
+  using ceres::DYNAMIC;
+  switch (n) {
+    case 2: return new AutoDiffCostFunction<Residuals, DYNAMIC, 2>(new Residuals{&P}, P.residuals());
+    case 4: return new AutoDiffCostFunction<Residuals, DYNAMIC, 4>(new Residuals{&P}, P.residuals());
+    case 6: return new AutoDiffCostFunction<Residuals, DYNAMIC, 6>(new Residuals{&P}, P.residuals());
+    default: {
+      auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(new Residuals{&P});
+      cost->AddParameterBlock(n);
+      cost->SetNumResiduals(P.residuals());
+      return cost;
+    }
+  }
+}
 
 // Cost 1/2 |r|^2 at params (double), with its terms. Not ok: the blend's
 // degeneracy at a node, or numerical_overflow where valid but huge weights,
@@ -297,6 +369,160 @@ Status cost_at(const Problem& P, const std::vector<double>& params, double& cost
   if (!evaluate(P, params.data(), r.data(), &terms, &why)) return why;
   cost = terms.fairness + terms.regularity + terms.targets + terms.obstacles;
   return std::isfinite(cost) ? Status::ok : Status::numerical_overflow;
+}
+
+// Levenberg-Marquardt in the box lo <= x <= hi on the cost function's
+// residuals and exact (autodiff) Jacobian. The few parameters make dense
+// normal equations cheap; what matters is the bound handling: a parameter
+// at its bound whose gradient points outwards is held (active set), the
+// step of the others is projected into the box, and the step's quality is
+// measured against the model's decrease for that projected step (so a
+// bound does not make good steps look bad and shrink them: Ceres' bounds
+// project the step but judge it by the unprojected model, which crawled
+// along a bound for dozens of iterations). Tolerances as Ceres':
+// function (|cost change| <= tol * cost), gradient (max norm of the
+// projected gradient), parameter (|step| <= tol (|x| + tol)).
+struct LmResult {
+  int iterations = 0;
+  bool converged = true;
+};
+
+LmResult projected_lm(const ceres::CostFunction& f, int m, std::vector<double>& x,
+                      const std::vector<double>& lo, const std::vector<double>& hi,
+                      const BlendOptions& o) {
+  using Mat = Eigen::MatrixXd;
+  using Vec = Eigen::VectorXd;
+  const int n = int(x.size());
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
+  Vec r(m), r_new(m);
+  auto eval = [&](const double* at, Vec& res, double* jac) {
+    const double* blocks[1] = {at};
+    double* jacs[1] = {jac};
+    return f.Evaluate(blocks, res.data(), jac ? jacs : nullptr);
+  };
+  // Into the box; within 1e-12 of its width from a bound onto the bound
+  // (a step shortened to the box lands there up to rounding).
+  auto clamp = [&](int i, double v) {
+    const double l = lo[size_t(i)], h = hi[size_t(i)], tol = 1e-12 * (h - l);
+    return v <= l + tol ? l : v >= h - tol ? h : v;
+  };
+  for (int i = 0; i < n; ++i) x[size_t(i)] = clamp(i, x[size_t(i)]);
+  LmResult out;
+  if (!eval(x.data(), r, J.data())) return out;
+  double cost = 0.5 * r.squaredNorm();
+  Mat H = J.transpose() * J;
+  Vec g = J.transpose() * r;
+  double mu = 1e-4, nu = 2.0;
+  std::vector<double> x_new(x.size());
+  while (true) {
+    // Projected gradient and the free parameters.
+    double pg = 0;
+    std::vector<int> free;
+    for (int i = 0; i < n; ++i) {
+      pg = std::max(pg, std::abs(x[size_t(i)] - clamp(i, x[size_t(i)] - g[i])));
+      const bool held = (x[size_t(i)] <= lo[size_t(i)] && g[i] > 0) ||
+                        (x[size_t(i)] >= hi[size_t(i)] && g[i] < 0);
+      if (!held) free.push_back(i);
+    }
+    if (pg <= o.gradient_tolerance || free.empty()) return out;
+    if (out.iterations >= o.max_iterations) {
+      out.converged = false;
+      return out;
+    }
+    if (!(mu <= 1e32)) return out;  // Ceres' min_trust_region_radius
+    ++out.iterations;
+    // The damped Gauss-Newton step of the free parameters; a free parameter
+    // at its bound whose step points outwards is held too (and the rest
+    // solved again).
+    Vec step;
+    while (true) {
+      const int k = int(free.size());
+      Mat A(k, k);
+      Vec b(k);
+      for (int a = 0; a < k; ++a) {
+        const int i = free[size_t(a)];
+        b[a] = -g[i];
+        for (int c = 0; c < k; ++c) A(a, c) = H(i, free[size_t(c)]);
+        A(a, a) += mu * std::min(std::max(H(i, i), 1e-6), 1e32);
+      }
+      step = A.ldlt().solve(b);
+      if (!std::isfinite(step.sum())) return out;
+      std::vector<int> keep;
+      for (int a = 0; a < k; ++a) {
+        const int i = free[size_t(a)];
+        if (!((x[size_t(i)] <= lo[size_t(i)] && step[a] < 0) ||
+              (x[size_t(i)] >= hi[size_t(i)] && step[a] > 0)))
+          keep.push_back(i);
+      }
+      if (keep.size() == free.size()) break;
+      if (keep.empty()) return out;  // no feasible descent in the model
+      free.swap(keep);
+    }
+    const int k = int(free.size());
+    // The step projected into the box, or (where the projection is no
+    // descent for the model) shortened to stay inside it; where it leaves
+    // the valid region (a degenerate node: the residuals cannot be
+    // evaluated) it is halved, up to 4 times, before the step counts as
+    // rejected.
+    double inside = 1.0;  // the longest feasible fraction of the step
+    for (int a = 0; a < k; ++a) {
+      const int i = free[size_t(a)];
+      const double room = step[a] > 0 ? hi[size_t(i)] - x[size_t(i)] : lo[size_t(i)] - x[size_t(i)];
+      if (std::abs(step[a]) > std::abs(room)) inside = std::min(inside, room / step[a]);
+    }
+    Vec dx(n);
+    double predicted = 0;
+    bool valid = false, truncate = false;
+    for (int halve = 0, stop = 0; halve <= 4 && !stop;) {
+      const double scale = std::ldexp(truncate ? inside : 1.0, -halve);
+      x_new = x;
+      for (int a = 0; a < k; ++a) {
+        const int i = free[size_t(a)];
+        x_new[size_t(i)] = clamp(i, x[size_t(i)] + scale * step[a]);
+      }
+      double xnorm = 0;
+      for (int i = 0; i < n; ++i) {
+        dx[i] = x_new[size_t(i)] - x[size_t(i)];
+        xnorm += x[size_t(i)] * x[size_t(i)];
+      }
+      if (dx.norm() <= o.parameter_tolerance * (std::sqrt(xnorm) + o.parameter_tolerance)) {
+        if (halve == 0 && (truncate || inside >= 1.0)) return out;
+        if (halve == 0) {
+          truncate = true;
+          continue;
+        }
+        break;
+      }
+      predicted = -(g.dot(dx) + 0.5 * dx.dot(H * dx));
+      if (!(predicted > 0)) {
+        if (truncate || inside >= 1.0) break;
+        truncate = true;  // the same halve count, now inside the box
+        continue;
+      }
+      valid = eval(x_new.data(), r_new, nullptr);
+      stop = valid;
+      ++halve;
+    }
+    double cost_new = HUGE_VAL;
+    if (valid) cost_new = 0.5 * r_new.squaredNorm();
+    if (valid && std::abs(cost - cost_new) <= o.function_tolerance * cost) {
+      if (cost_new < cost) x = x_new;
+      return out;
+    }
+    const double rho = valid ? (cost - cost_new) / predicted : -1.0;
+    if (valid && rho > 1e-3) {
+      if (!eval(x_new.data(), r, J.data())) return out;  // x stays the last good point
+      x = x_new;
+      cost = 0.5 * r.squaredNorm();
+      H = J.transpose() * J;
+      g = J.transpose() * r;
+      mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
+      nu = 2.0;
+    } else {
+      mu *= nu;
+      nu *= 2.0;
+    }
+  }
 }
 
 bool finite_nonneg(double x) { return std::isfinite(x) && x >= 0; }
@@ -499,32 +725,15 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   const std::vector<double> x_start = x;
 
   // Solve.
-  ceres::Problem problem;
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(new Residuals{&P});
-  cost->AddParameterBlock(2 * P.free);
-  cost->SetNumResiduals(P.residuals());
-  problem.AddResidualBlock(cost, nullptr, x.data());
-  for (size_t q = 0; q < x.size(); ++q) {
-    problem.SetParameterLowerBound(x.data(), int(q), lo[q]);
-    problem.SetParameterUpperBound(x.data(), int(q), hi[q]);
-  }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = options.function_tolerance;
-  so.gradient_tolerance = options.gradient_tolerance;
-  so.parameter_tolerance = options.parameter_tolerance;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
-  ceres::Solver::Summary cs;
-  if (options.max_iterations > 0) ceres::Solve(so, &problem, &cs);
+  std::unique_ptr<ceres::CostFunction> cost(make_cost(P, 2 * P.free));
+  LmResult lm;
+  if (options.max_iterations > 0) lm = projected_lm(*cost, P.residuals(), x, lo, hi, options);
 
   // The result: the optimum if it is a valid blend no worse than the start.
   BlendSummary R;
   R.initial_cost = cost0;
-  R.iterations = options.max_iterations > 0 ? int(cs.iterations.size()) - 1 : 0;
-  R.termination = cs.termination_type == ceres::NO_CONVERGENCE ? BlendTermination::iteration_limit
-                                                               : BlendTermination::converged;
+  R.iterations = lm.iterations;
+  R.termination = lm.converged ? BlendTermination::converged : BlendTermination::iteration_limit;
   R.length_scale = P.L;
   R.fairness_scale = F0;
   double cost1 = 0;
