@@ -401,9 +401,11 @@ LmResult projected_lm(const ceres::CostFunction& f, int m, std::vector<double>& 
     return f.Evaluate(blocks, res.data(), jac ? jacs : nullptr);
   };
   // Into the box; within 1e-12 of its width from a bound onto the bound
-  // (a step shortened to the box lands there up to rounding).
+  // (a step shortened to the box lands there up to rounding; no snapping
+  // where the width overflows).
   auto clamp = [&](int i, double v) {
-    const double l = lo[size_t(i)], h = hi[size_t(i)], tol = 1e-12 * (h - l);
+    const double l = lo[size_t(i)], h = hi[size_t(i)];
+    const double tol = std::isfinite(h - l) ? 1e-12 * (h - l) : 0.0;
     return v <= l + tol ? l : v >= h - tol ? h : v;
   };
   for (int i = 0; i < n; ++i) x[size_t(i)] = clamp(i, x[size_t(i)]);
