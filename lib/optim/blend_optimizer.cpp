@@ -4,6 +4,7 @@
 
 #include <ceres/ceres.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -117,7 +118,7 @@ void curves_at(const Problem& P, const Basis* b, const Vec3<T> (&d)[2][3][kMaxBl
 
 // The blend's circle frame at a node to order 2 (PRCS or PRRS on the
 // series), f = v; false where the planes are dependent (a step that
-// leaves the valid region is halved, then rejected: projected_lm).
+// leaves the valid region is rejected: Ceres shrinks its trust region).
 template <class T>
 bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
               CircleFrame<Taylor<T, 2>>& F, T& rd) {
@@ -324,34 +325,81 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
   return true;
 }
 
+// The box lo <= x <= hi of the free parameters, enforced exactly by the
+// smooth map x_i = mid_i + half_i sin(s_i) of the unconstrained solver
+// variables s (so Ceres solves an unconstrained problem: its bounds judge
+// projected steps by the unprojected model and crawl along active bounds).
+// A parameter whose box has zero or non-finite width is fixed at its start.
+struct Box {
+  int n = 0;
+  double lo[2 * kMaxBlendOrder] = {}, hi[2 * kMaxBlendOrder] = {};
+  double mid[2 * kMaxBlendOrder] = {}, half[2 * kMaxBlendOrder] = {};
+  double x0[2 * kMaxBlendOrder] = {};
+  bool fixed[2 * kMaxBlendOrder] = {};
+
+  Box(const std::vector<double>& l, const std::vector<double>& h, const std::vector<double>& x) {
+    n = int(x.size());
+    for (int i = 0; i < n; ++i) {
+      lo[i] = l[size_t(i)];
+      hi[i] = h[size_t(i)];
+      x0[i] = x[size_t(i)];
+      const double w = hi[i] - lo[i];
+      fixed[i] = !(std::isfinite(w) && w > 0);
+      half[i] = fixed[i] ? 0.0 : 0.5 * w;
+      mid[i] = fixed[i] ? x0[i] : 0.5 * lo[i] + 0.5 * hi[i];
+    }
+  }
+  // The solver variable of x (in [-pi/2, pi/2]; 0 for a fixed parameter).
+  double to_s(int i, double x) const {
+    if (fixed[i]) return 0.0;
+    return std::asin(std::min(std::max((x - mid[i]) / half[i], -1.0), 1.0));
+  }
+  // x of the solver variable s, inside the box also after rounding.
+  template <class T>
+  T to_x(int i, const T& s) const {
+    using std::sin;
+    if (fixed[i]) return T(x0[i]);
+    const T x = mid[i] + half[i] * sin(s);
+    if (value_of(x) < lo[i]) return T(lo[i]);
+    if (value_of(x) > hi[i]) return T(hi[i]);
+    return x;
+  }
+};
+
 // The cost functor in both Ceres forms: one parameter block of fixed size
 // (AutoDiffCostFunction, Jets exactly as wide as the parameters) and the
-// dynamic form (stride 4) for other counts.
+// dynamic form (stride 4) for other counts. The parameters are the solver
+// variables s of the box; false (a degenerate node, a residual not finite)
+// makes Ceres reject the step and shrink its trust region.
 struct Residuals {
   const Problem* P;
+  const Box* box;
   template <class T>
-  bool operator()(const T* params, T* r) const {
-    return evaluate(*P, params, r, nullptr);
+  bool operator()(const T* s, T* r) const {
+    T x[2 * kMaxBlendOrder];
+    for (int i = 0; i < box->n; ++i) x[i] = box->to_x(i, s[i]);
+    return evaluate(*P, x, r, nullptr);
   }
   template <class T>
-  bool operator()(T const* const* params, T* r) const {
-    return evaluate(*P, params[0], r, nullptr);
+  bool operator()(T const* const* s, T* r) const {
+    return (*this)(s[0], r);
   }
 };
 
 // The cost function for n = 2 free parameters (free_orders 1, the default
 // for K = 1), 4 (free_orders 2, the default for K >= 2) or 6: Jet<double,
 // n>; others: dynamic Jets of stride 4.
-ceres::CostFunction* make_cost(const Problem& P, int n) {
+ceres::CostFunction* make_cost(const Problem& P, const Box& box) {
   using ceres::AutoDiffCostFunction;
   using ceres::DYNAMIC;
-  switch (n) {
-    case 2: return new AutoDiffCostFunction<Residuals, DYNAMIC, 2>(new Residuals{&P}, P.residuals());
-    case 4: return new AutoDiffCostFunction<Residuals, DYNAMIC, 4>(new Residuals{&P}, P.residuals());
-    case 6: return new AutoDiffCostFunction<Residuals, DYNAMIC, 6>(new Residuals{&P}, P.residuals());
+  auto* f = new Residuals{&P, &box};
+  switch (box.n) {
+    case 2: return new AutoDiffCostFunction<Residuals, DYNAMIC, 2>(f, P.residuals());
+    case 4: return new AutoDiffCostFunction<Residuals, DYNAMIC, 4>(f, P.residuals());
+    case 6: return new AutoDiffCostFunction<Residuals, DYNAMIC, 6>(f, P.residuals());
     default: {
-      auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(new Residuals{&P});
-      cost->AddParameterBlock(n);
+      auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(f);
+      cost->AddParameterBlock(box.n);
       cost->SetNumResiduals(P.residuals());
       return cost;
     }
@@ -369,162 +417,6 @@ Status cost_at(const Problem& P, const std::vector<double>& params, double& cost
   if (!evaluate(P, params.data(), r.data(), &terms, &why)) return why;
   cost = terms.fairness + terms.regularity + terms.targets + terms.obstacles;
   return std::isfinite(cost) ? Status::ok : Status::numerical_overflow;
-}
-
-// Levenberg-Marquardt in the box lo <= x <= hi on the cost function's
-// residuals and exact (autodiff) Jacobian. The few parameters make dense
-// normal equations cheap; what matters is the bound handling: a parameter
-// at its bound whose gradient points outwards is held (active set), the
-// step of the others is projected into the box, and the step's quality is
-// measured against the model's decrease for that projected step (so a
-// bound does not make good steps look bad and shrink them: Ceres' bounds
-// project the step but judge it by the unprojected model, which crawled
-// along a bound for dozens of iterations). Tolerances as Ceres':
-// function (|cost change| <= tol * cost), gradient (max norm of the
-// projected gradient), parameter (|step| <= tol (|x| + tol)).
-struct LmResult {
-  int iterations = 0;
-  bool converged = true;
-};
-
-LmResult projected_lm(const ceres::CostFunction& f, int m, std::vector<double>& x,
-                      const std::vector<double>& lo, const std::vector<double>& hi,
-                      const BlendOptions& o) {
-  using Mat = Eigen::MatrixXd;
-  using Vec = Eigen::VectorXd;
-  const int n = int(x.size());
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(m, n);
-  Vec r(m), r_new(m);
-  auto eval = [&](const double* at, Vec& res, double* jac) {
-    const double* blocks[1] = {at};
-    double* jacs[1] = {jac};
-    return f.Evaluate(blocks, res.data(), jac ? jacs : nullptr);
-  };
-  // Into the box; within 1e-12 of its width from a bound onto the bound
-  // (a step shortened to the box lands there up to rounding; no snapping
-  // where the width overflows).
-  auto clamp = [&](int i, double v) {
-    const double l = lo[size_t(i)], h = hi[size_t(i)];
-    const double tol = std::isfinite(h - l) ? 1e-12 * (h - l) : 0.0;
-    return v <= l + tol ? l : v >= h - tol ? h : v;
-  };
-  for (int i = 0; i < n; ++i) x[size_t(i)] = clamp(i, x[size_t(i)]);
-  LmResult out;
-  if (!eval(x.data(), r, J.data())) return out;
-  double cost = 0.5 * r.squaredNorm();
-  Mat H = J.transpose() * J;
-  Vec g = J.transpose() * r;
-  double mu = 1e-4, nu = 2.0;
-  std::vector<double> x_new(x.size());
-  while (true) {
-    // Projected gradient and the free parameters.
-    double pg = 0;
-    std::vector<int> free;
-    for (int i = 0; i < n; ++i) {
-      pg = std::max(pg, std::abs(x[size_t(i)] - clamp(i, x[size_t(i)] - g[i])));
-      const bool held = (x[size_t(i)] <= lo[size_t(i)] && g[i] > 0) ||
-                        (x[size_t(i)] >= hi[size_t(i)] && g[i] < 0);
-      if (!held) free.push_back(i);
-    }
-    if (pg <= o.gradient_tolerance || free.empty()) return out;
-    if (out.iterations >= o.max_iterations) {
-      out.converged = false;
-      return out;
-    }
-    if (!(mu <= 1e32)) return out;  // Ceres' min_trust_region_radius
-    ++out.iterations;
-    // The damped Gauss-Newton step of the free parameters; a free parameter
-    // at its bound whose step points outwards is held too (and the rest
-    // solved again).
-    Vec step;
-    while (true) {
-      const int k = int(free.size());
-      Mat A(k, k);
-      Vec b(k);
-      for (int a = 0; a < k; ++a) {
-        const int i = free[size_t(a)];
-        b[a] = -g[i];
-        for (int c = 0; c < k; ++c) A(a, c) = H(i, free[size_t(c)]);
-        A(a, a) += mu * std::min(std::max(H(i, i), 1e-6), 1e32);
-      }
-      step = A.ldlt().solve(b);
-      if (!std::isfinite(step.sum())) return out;
-      std::vector<int> keep;
-      for (int a = 0; a < k; ++a) {
-        const int i = free[size_t(a)];
-        if (!((x[size_t(i)] <= lo[size_t(i)] && step[a] < 0) ||
-              (x[size_t(i)] >= hi[size_t(i)] && step[a] > 0)))
-          keep.push_back(i);
-      }
-      if (keep.size() == free.size()) break;
-      if (keep.empty()) return out;  // no feasible descent in the model
-      free.swap(keep);
-    }
-    const int k = int(free.size());
-    // The step projected into the box, or (where the projection is no
-    // descent for the model) shortened to stay inside it; where it leaves
-    // the valid region (a degenerate node: the residuals cannot be
-    // evaluated) it is halved, up to 4 times, before the step counts as
-    // rejected.
-    double inside = 1.0;  // the longest feasible fraction of the step
-    for (int a = 0; a < k; ++a) {
-      const int i = free[size_t(a)];
-      const double room = step[a] > 0 ? hi[size_t(i)] - x[size_t(i)] : lo[size_t(i)] - x[size_t(i)];
-      if (std::abs(step[a]) > std::abs(room)) inside = std::min(inside, room / step[a]);
-    }
-    Vec dx(n);
-    double predicted = 0;
-    bool valid = false, truncate = false;
-    for (int halve = 0, stop = 0; halve <= 4 && !stop;) {
-      const double scale = std::ldexp(truncate ? inside : 1.0, -halve);
-      x_new = x;
-      for (int a = 0; a < k; ++a) {
-        const int i = free[size_t(a)];
-        x_new[size_t(i)] = clamp(i, x[size_t(i)] + scale * step[a]);
-      }
-      double xnorm = 0;
-      for (int i = 0; i < n; ++i) {
-        dx[i] = x_new[size_t(i)] - x[size_t(i)];
-        xnorm += x[size_t(i)] * x[size_t(i)];
-      }
-      if (dx.norm() <= o.parameter_tolerance * (std::sqrt(xnorm) + o.parameter_tolerance)) {
-        if (halve == 0 && (truncate || inside >= 1.0)) return out;
-        if (halve == 0) {
-          truncate = true;
-          continue;
-        }
-        break;
-      }
-      predicted = -(g.dot(dx) + 0.5 * dx.dot(H * dx));
-      if (!(predicted > 0)) {
-        if (truncate || inside >= 1.0) break;
-        truncate = true;  // the same halve count, now inside the box
-        continue;
-      }
-      valid = eval(x_new.data(), r_new, nullptr);
-      stop = valid;
-      ++halve;
-    }
-    double cost_new = HUGE_VAL;
-    if (valid) cost_new = 0.5 * r_new.squaredNorm();
-    if (valid && std::abs(cost - cost_new) <= o.function_tolerance * cost) {
-      if (cost_new < cost) x = x_new;
-      return out;
-    }
-    const double rho = valid ? (cost - cost_new) / predicted : -1.0;
-    if (valid && rho > 1e-3) {
-      if (!eval(x_new.data(), r, J.data())) return out;  // x stays the last good point
-      x = x_new;
-      cost = 0.5 * r.squaredNorm();
-      H = J.transpose() * J;
-      g = J.transpose() * r;
-      mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
-      nu = 2.0;
-    } else {
-      mu *= nu;
-      nu *= 2.0;
-    }
-  }
 }
 
 bool finite_nonneg(double x) { return std::isfinite(x) && x >= 0; }
@@ -726,16 +618,43 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   if (Status st = cost_at(P, x, cost0, terms0); st != Status::ok) return st;
   const std::vector<double> x_start = x;
 
-  // Solve.
-  std::unique_ptr<ceres::CostFunction> cost(make_cost(P, 2 * P.free));
-  LmResult lm;
-  if (options.max_iterations > 0) lm = projected_lm(*cost, P.residuals(), x, lo, hi, options);
+  // Solve: Ceres' Levenberg-Marquardt on the unconstrained solver
+  // variables s of the box (fixed parameters held constant), then x of s.
+  const Box box(lo, hi, x);
+  std::vector<double> s(x.size());
+  std::vector<int> fixed;
+  for (int i = 0; i < box.n; ++i) {
+    s[size_t(i)] = box.to_s(i, x[size_t(i)]);
+    if (box.fixed[i]) fixed.push_back(i);
+  }
+  ceres::Solver::Summary cs;
+  const bool solve = options.max_iterations > 0 && int(fixed.size()) < box.n;
+  if (solve) {
+    ceres::Problem problem;
+    problem.AddResidualBlock(make_cost(P, box), nullptr, s.data());
+    if (!fixed.empty())
+      problem.SetManifold(s.data(), new ceres::SubsetManifold(box.n, fixed));
+    ceres::Solver::Options so;
+    so.minimizer_type = ceres::TRUST_REGION;
+    so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = options.max_iterations;
+    so.function_tolerance = options.function_tolerance;
+    so.gradient_tolerance = options.gradient_tolerance;
+    so.parameter_tolerance = options.parameter_tolerance;
+    so.logging_type = ceres::SILENT;
+    so.num_threads = 1;
+    ceres::Solve(so, &problem, &cs);
+    for (int i = 0; i < box.n; ++i) x[size_t(i)] = box.to_x(i, s[size_t(i)]);
+  }
 
   // The result: the optimum if it is a valid blend no worse than the start.
   BlendSummary R;
   R.initial_cost = cost0;
-  R.iterations = lm.iterations;
-  R.termination = lm.converged ? BlendTermination::converged : BlendTermination::iteration_limit;
+  R.iterations = solve ? std::max(int(cs.iterations.size()) - 1, 0) : 0;
+  R.termination = solve && cs.termination_type == ceres::NO_CONVERGENCE
+                      ? BlendTermination::iteration_limit
+                      : BlendTermination::converged;
   R.length_scale = P.L;
   R.fairness_scale = F0;
   double cost1 = 0;

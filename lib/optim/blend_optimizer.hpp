@@ -1,8 +1,8 @@
 // The optimizer of a blend's free parameters (issue 4 item 6; SPEC.md §8e):
 // the jets (phi', phi'', ...) of both ends of a canal or ringed blend
-// (seed 000 §9; blend.hpp BlendEnd) chosen by a box-constrained
-// Levenberg-Marquardt (blend_optimizer.cpp projected_lm) on Ceres' autodiff
-// Jacobians against a weighted sum of
+// (seed 000 §9; blend.hpp BlendEnd) chosen by Ceres' Levenberg-Marquardt
+// (autodiff Jacobians; the box bounds enforced exactly by the smooth map
+// x = mid + half sin(s) of unconstrained variables) against a weighted sum of
 //   fairness    the integral of |x_tt|^2 + 2 |x_tv|^2 + |x_vv|^2 over the
 //               blend (Gauss-Legendre in t, both charts v in [-1, 1] and
 //               1/v in [-1, 1] of the circle), relative to the start blend's;
