@@ -64,9 +64,10 @@ Taylor<S, N> reparameterization_series(const S* jet, int K) {
   return h;
 }
 
-template <class S>
-void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
-  constexpr int N = kMaxBlendOrder;
+// The series are truncated at order N (K <= N; the result is the same for
+// every N >= K): the optimizer calls it with N = K.
+template <int N, class S>
+void reparameterize_to(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
   const Taylor<S, N> h = reparameterization_series<N>(jet, K);
   for (int j = 0; j < 3; ++j) {
     Taylor<double, N> f;
@@ -82,6 +83,11 @@ void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
       out[l][j] = S(fact) * r.c[l];
     }
   }
+}
+
+template <class S>
+void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
+  reparameterize_to<kMaxBlendOrder>(K, dx, jet, out);
 }
 
 // The jet (phi', phi'', ..., phi^(K)) of end `e` (index as blend_lambda).

@@ -4,9 +4,11 @@
 
 #include <ceres/ceres.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -115,8 +117,8 @@ void curves_at(const Problem& P, const Basis* b, const Vec3<T> (&d)[2][3][kMaxBl
 }
 
 // The blend's circle frame at a node to order 2 (PRCS or PRRS on the
-// series), f = v; false where the planes are dependent (a Ceres step that
-// leaves the valid region is rejected and shortened).
+// series), f = v; false where the planes are dependent (a step that
+// leaves the valid region is rejected: Ceres shrinks its trust region).
 template <class T>
 bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
               CircleFrame<Taylor<T, 2>>& F, T& rd) {
@@ -148,26 +150,66 @@ bool frame_of(const Problem& P, const Vec3<Taylor<T, kOrder>>* Q,
   return true;
 }
 
-// x(t, z) near the node z as a series in z whose coefficients are series
-// in t. The circle is the rational quadratic x = o + (P0 + P1 v + P2 v^2) /
-// (Q0 + Q1 v + Q2 v^2) of circle_quadratic (one per t node and chart:
-// chart 0 is v = z, f = v; chart 1 is v = 1/z, the same circle with
-// (alpha, beta, gamma, delta) = (0, 1, 1, 0)), so per point only the two
-// quadratics are expanded at z and divided as series.
+// The circle's rational quadratic in one chart, x = o + (P0 + P1 z +
+// P2 z^2) / (Q0 + Q1 z + Q2 z^2), coefficients as t-series of order 2.
+// circle_quadratic of the frame with f = v (alpha = delta = 1, beta = gamma
+// = 0) reduces to P0 = 2 (a.d) a - |a|^2 d, P1 = 2 a x d, P2 = d, Q = (|a|^2,
+// 0, 1); the chart v = 1/z (alpha <-> beta, gamma <-> delta) is the same
+// rational function with the coefficients reversed (multiply by z^2).
 template <class T>
-void point_series2(const CircleQuadratic<Taylor<T, 2>>& C, double z,
-                   Vec3<Taylor<Taylor<T, 2>, 2>>& x) {
+void chart_quadratics(const CircleFrame<Taylor<T, 2>>& F, CircleQuadratic<Taylor<T, 2>> (&C)[2]) {
   using U = Taylor<T, 2>;
-  using Z = Taylor<U, 2>;
-  auto expand = [z](const U& a0, const U& a1, const U& a2) {
-    Z r;
-    r.c[0] = a0 + (a1 + a2 * U(z)) * U(z);
-    r.c[1] = a1 + U(2.0 * z) * a2;
-    r.c[2] = a2;
-    return r;
+  const Vec3<U> d = F.p - F.o;
+  const U aa = F.a.dot(F.a);
+  const U ad = F.a.dot(d);
+  const U two(2.0);
+  const Vec3<U> P0 = (two * ad) * F.a - aa * d, P1 = two * F.a.cross(d);
+  C[0].o = C[1].o = F.o;
+  C[0].P[0] = C[1].P[2] = P0;
+  C[0].P[1] = C[1].P[1] = P1;
+  C[0].P[2] = C[1].P[0] = d;
+  C[0].Q[0] = C[1].Q[2] = aa;
+  C[0].Q[1] = C[1].Q[1] = U(0.0);
+  C[0].Q[2] = C[1].Q[0] = U(1.0);
+}
+
+// x_t, x_tt, x_tz, x_zz of x(t, z) = o(t) + N(t, z) / D(t, z) at the node
+// (t_i, z) from the chart's quadratic (closed-form quotient rule, the
+// t-series coefficients c[k] = d^k/dt^k / k!):
+//   f = N/D, f_t = (N_t - f D_t)/D, f_z = (N_z - f D_z)/D,
+//   f_tt = (N_tt - 2 f_t D_t - f D_tt)/D,
+//   f_tz = (N_tz - f_t D_z - f_z D_t - f D_tz)/D,
+//   f_zz = (N_zz - 2 f_z D_z - f D_zz)/D.
+template <class T>
+struct PointDerivatives {
+  Vec3<T> xt, xtt, xtz, xzz;
+};
+
+template <class T>
+void point_derivatives(const CircleQuadratic<Taylor<T, 2>>& C, double z, PointDerivatives<T>& X) {
+  const T z1(z), z2(z * z), two(2.0), twoz(2.0 * z);
+  auto quad = [&](const Taylor<T, 2>& a0, const Taylor<T, 2>& a1, const Taylor<T, 2>& a2, T* v) {
+    v[0] = a0.c[0] + z1 * a1.c[0] + z2 * a2.c[0];              // value
+    v[1] = a0.c[1] + z1 * a1.c[1] + z2 * a2.c[1];              // d/dt
+    v[2] = two * (a0.c[2] + z1 * a1.c[2] + z2 * a2.c[2]);      // d2/dt2
+    v[3] = a1.c[0] + twoz * a2.c[0];                           // d/dz
+    v[4] = a1.c[1] + twoz * a2.c[1];                           // d2/dtdz
+    v[5] = two * a2.c[0];                                      // d2/dz2
   };
-  const Z den = expand(C.Q[0], C.Q[1], C.Q[2]);
-  for (int j = 0; j < 3; ++j) x[j] = Z(C.o[j]) + expand(C.P[0][j], C.P[1][j], C.P[2][j]) / den;
+  T D[6];
+  quad(C.Q[0], C.Q[1], C.Q[2], D);
+  const T inv = T(1.0) / D[0];
+  for (int j = 0; j < 3; ++j) {
+    T N[6];
+    quad(C.P[0][j], C.P[1][j], C.P[2][j], N);
+    const T f = N[0] * inv;
+    const T ft = (N[1] - f * D[1]) * inv;
+    const T fz = (N[3] - f * D[3]) * inv;
+    X.xt[j] = C.o[j].c[1] + ft;
+    X.xtt[j] = two * C.o[j].c[2] + (N[2] - two * ft * D[1] - f * D[2]) * inv;
+    X.xtz[j] = (N[4] - ft * D[3] - fz * D[1] - f * D[4]) * inv;
+    X.xzz[j] = (N[5] - two * fz * D[3] - f * D[5]) * inv;
+  }
 }
 
 // A point X against the circle of the frame (values): its height h over the
@@ -190,6 +232,17 @@ void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T&
   radial = sqrt_of(T((w - h * n).squaredNorm())) - sqrt_of(G.radius2);
 }
 
+// reparameterize with the series truncated at order K (not kMaxBlendOrder).
+template <class T>
+void reparameterize_k(int K, const Vec3d* dx, const T* jet, Vec3<T>* out) {
+  switch (K) {
+    case 1: return reparameterize_to<1>(K, dx, jet, out);
+    case 2: return reparameterize_to<2>(K, dx, jet, out);
+    case 3: return reparameterize_to<3>(K, dx, jet, out);
+    default: return reparameterize_to<kMaxBlendOrder>(K, dx, jet, out);
+  }
+}
+
 // The residual vector (layout: per t node the determinant hinge, one
 // clearance hinge per obstacle, then per chart and z node 9 fairness and 1
 // speed hinge; then 2 per target). False where a node's frame is
@@ -207,7 +260,7 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
     for (int m = 0; m < P.K; ++m) jet[e][m] = m < P.free ? params[e * P.free + m] : T(P.jet0[e][m]);
   Vec3<T> d[2][3][kMaxBlendOrder + 1];
   for (int e = 0; e < 2; ++e)
-    for (int j = 0; j < P.count; ++j) reparameterize(P.K, P.D[e][j], jet[e], d[e][j]);
+    for (int j = 0; j < P.count; ++j) reparameterize_k(P.K, P.D[e][j], jet[e], d[e][j]);
   const BlendObjective& O = P.obj;
   const T w_reg(std::sqrt(O.regularity)), w_obs(std::sqrt(O.obstacle_weight)),
       w_tgt(std::sqrt(O.target_weight));
@@ -234,25 +287,19 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
       add(&Terms::obstacles, r[k++]);
     }
     CircleQuadratic<Taylor<T, 2>> C[2];
-    C[0] = circle_quadratic(F);
-    {
-      CircleFrame<Taylor<T, 2>> G = F;  // v = 1/z: f = 1/z
-      std::swap(G.alpha, G.beta);
-      std::swap(G.gamma, G.delta);
-      C[1] = circle_quadratic(G);
-    }
+    chart_quadratics(F, C);
     for (int chart = 0; chart < 2; ++chart)
       for (int j = 0; j < P.nz; ++j) {
-        Vec3<Taylor<Taylor<T, 2>, 2>> x;
-        point_series2(C[chart], P.zn[j], x);
+        PointDerivatives<T> X;
+        point_derivatives(C[chart], P.zn[j], X);
         const double wq = std::sqrt(O.fairness * P.tw[i] * half * P.zw[j]) * P.fair_norm;
-        Vec3<T> xt;
+        const T w1(wq), w2(std::sqrt(2.0) * wq);
         for (int c = 0; c < 3; ++c) {
-          xt[c] = x[c].c[0].c[1];
-          r[k + c] = T(2.0 * wq) * x[c].c[0].c[2];                  // x_tt
-          r[k + 3 + c] = T(std::sqrt(2.0) * wq) * x[c].c[1].c[1];   // x_tz
-          r[k + 6 + c] = T(2.0 * wq) * x[c].c[2].c[0];              // x_zz
+          r[k + c] = w1 * X.xtt[c];
+          r[k + 3 + c] = w2 * X.xtz[c];
+          r[k + 6 + c] = w1 * X.xzz[c];
         }
+        const Vec3<T>& xt = X.xt;
         for (int c = 0; c < 9; ++c) add(&Terms::fairness, r[k + c]);
         k += 9;
         const T speed = sqrt_of(T(xt.squaredNorm()));
@@ -278,13 +325,86 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
   return true;
 }
 
-struct Residuals {
-  const Problem* P;
+// The box lo <= x <= hi of the free parameters, enforced exactly by the
+// smooth map x_i = mid_i + half_i sin(s_i) of the unconstrained solver
+// variables s (so Ceres solves an unconstrained problem: its bounds judge
+// projected steps by the unprojected model and crawl along active bounds).
+// A parameter whose box has zero or non-finite width is fixed at its start.
+struct Box {
+  int n = 0;
+  double lo[2 * kMaxBlendOrder] = {}, hi[2 * kMaxBlendOrder] = {};
+  double mid[2 * kMaxBlendOrder] = {}, half[2 * kMaxBlendOrder] = {};
+  double x0[2 * kMaxBlendOrder] = {};
+  bool fixed[2 * kMaxBlendOrder] = {};
+
+  Box(const std::vector<double>& l, const std::vector<double>& h, const std::vector<double>& x) {
+    n = int(x.size());
+    for (int i = 0; i < n; ++i) {
+      lo[i] = l[size_t(i)];
+      hi[i] = h[size_t(i)];
+      x0[i] = x[size_t(i)];
+      const double w = hi[i] - lo[i];
+      fixed[i] = !(std::isfinite(w) && w > 0);
+      half[i] = fixed[i] ? 0.0 : 0.5 * w;
+      mid[i] = fixed[i] ? x0[i] : 0.5 * lo[i] + 0.5 * hi[i];
+    }
+  }
+  // The solver variable of x (in [-pi/2, pi/2]; 0 for a fixed parameter).
+  double to_s(int i, double x) const {
+    if (fixed[i]) return 0.0;
+    return std::asin(std::min(std::max((x - mid[i]) / half[i], -1.0), 1.0));
+  }
+  // x of the solver variable s, inside the box also after rounding.
   template <class T>
-  bool operator()(T const* const* params, T* r) const {
-    return evaluate(*P, params[0], r, nullptr);
+  T to_x(int i, const T& s) const {
+    using std::sin;
+    if (fixed[i]) return T(x0[i]);
+    const T x = mid[i] + half[i] * sin(s);
+    if (value_of(x) < lo[i]) return T(lo[i]);
+    if (value_of(x) > hi[i]) return T(hi[i]);
+    return x;
   }
 };
+
+// The cost functor in both Ceres forms: one parameter block of fixed size
+// (AutoDiffCostFunction, Jets exactly as wide as the parameters) and the
+// dynamic form (stride 4) for other counts. The parameters are the solver
+// variables s of the box; false (a degenerate node, a residual not finite)
+// makes Ceres reject the step and shrink its trust region.
+struct Residuals {
+  const Problem* P;
+  const Box* box;
+  template <class T>
+  bool operator()(const T* s, T* r) const {
+    T x[2 * kMaxBlendOrder];
+    for (int i = 0; i < box->n; ++i) x[i] = box->to_x(i, s[i]);
+    return evaluate(*P, x, r, nullptr);
+  }
+  template <class T>
+  bool operator()(T const* const* s, T* r) const {
+    return (*this)(s[0], r);
+  }
+};
+
+// The cost function for n = 2 free parameters (free_orders 1, the default
+// for K = 1), 4 (free_orders 2, the default for K >= 2) or 6: Jet<double,
+// n>; others: dynamic Jets of stride 4.
+ceres::CostFunction* make_cost(const Problem& P, const Box& box) {
+  using ceres::AutoDiffCostFunction;
+  using ceres::DYNAMIC;
+  auto* f = new Residuals{&P, &box};
+  switch (box.n) {
+    case 2: return new AutoDiffCostFunction<Residuals, DYNAMIC, 2>(f, P.residuals());
+    case 4: return new AutoDiffCostFunction<Residuals, DYNAMIC, 4>(f, P.residuals());
+    case 6: return new AutoDiffCostFunction<Residuals, DYNAMIC, 6>(f, P.residuals());
+    default: {
+      auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(f);
+      cost->AddParameterBlock(box.n);
+      cost->SetNumResiduals(P.residuals());
+      return cost;
+    }
+  }
+}
 
 // Cost 1/2 |r|^2 at params (double), with its terms. Not ok: the blend's
 // degeneracy at a node, or numerical_overflow where valid but huge weights,
@@ -498,33 +618,43 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   if (Status st = cost_at(P, x, cost0, terms0); st != Status::ok) return st;
   const std::vector<double> x_start = x;
 
-  // Solve.
-  ceres::Problem problem;
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(new Residuals{&P});
-  cost->AddParameterBlock(2 * P.free);
-  cost->SetNumResiduals(P.residuals());
-  problem.AddResidualBlock(cost, nullptr, x.data());
-  for (size_t q = 0; q < x.size(); ++q) {
-    problem.SetParameterLowerBound(x.data(), int(q), lo[q]);
-    problem.SetParameterUpperBound(x.data(), int(q), hi[q]);
+  // Solve: Ceres' Levenberg-Marquardt on the unconstrained solver
+  // variables s of the box (fixed parameters held constant), then x of s.
+  const Box box(lo, hi, x);
+  std::vector<double> s(x.size());
+  std::vector<int> fixed;
+  for (int i = 0; i < box.n; ++i) {
+    s[size_t(i)] = box.to_s(i, x[size_t(i)]);
+    if (box.fixed[i]) fixed.push_back(i);
   }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = options.function_tolerance;
-  so.gradient_tolerance = options.gradient_tolerance;
-  so.parameter_tolerance = options.parameter_tolerance;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
   ceres::Solver::Summary cs;
-  if (options.max_iterations > 0) ceres::Solve(so, &problem, &cs);
+  const bool solve = options.max_iterations > 0 && int(fixed.size()) < box.n;
+  if (solve) {
+    ceres::Problem problem;
+    problem.AddResidualBlock(make_cost(P, box), nullptr, s.data());
+    if (!fixed.empty())
+      problem.SetManifold(s.data(), new ceres::SubsetManifold(box.n, fixed));
+    ceres::Solver::Options so;
+    so.minimizer_type = ceres::TRUST_REGION;
+    so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = options.max_iterations;
+    so.function_tolerance = options.function_tolerance;
+    so.gradient_tolerance = options.gradient_tolerance;
+    so.parameter_tolerance = options.parameter_tolerance;
+    so.logging_type = ceres::SILENT;
+    so.num_threads = 1;
+    ceres::Solve(so, &problem, &cs);
+    for (int i = 0; i < box.n; ++i) x[size_t(i)] = box.to_x(i, s[size_t(i)]);
+  }
 
   // The result: the optimum if it is a valid blend no worse than the start.
   BlendSummary R;
   R.initial_cost = cost0;
-  R.iterations = options.max_iterations > 0 ? int(cs.iterations.size()) - 1 : 0;
-  R.termination = cs.termination_type == ceres::NO_CONVERGENCE ? BlendTermination::iteration_limit
-                                                               : BlendTermination::converged;
+  R.iterations = solve ? std::max(int(cs.iterations.size()) - 1, 0) : 0;
+  R.termination = solve && cs.termination_type == ceres::NO_CONVERGENCE
+                      ? BlendTermination::iteration_limit
+                      : BlendTermination::converged;
   R.length_scale = P.L;
   R.fairness_scale = F0;
   double cost1 = 0;

@@ -1,7 +1,8 @@
 // The optimizer of a blend's free parameters (issue 4 item 6; SPEC.md §8e):
 // the jets (phi', phi'', ...) of both ends of a canal or ringed blend
-// (seed 000 §9; blend.hpp BlendEnd) chosen by Levenberg-Marquardt (Ceres)
-// against a weighted sum of
+// (seed 000 §9; blend.hpp BlendEnd) chosen by Ceres' Levenberg-Marquardt
+// (autodiff Jacobians; the box bounds enforced exactly by the smooth map
+// x = mid + half sin(s) of unconstrained variables) against a weighted sum of
 //   fairness    the integral of |x_tt|^2 + 2 |x_tv|^2 + |x_vv|^2 over the
 //               blend (Gauss-Legendre in t, both charts v in [-1, 1] and
 //               1/v in [-1, 1] of the circle), relative to the start blend's;
@@ -14,8 +15,8 @@
 //               (closed-form point-circle distance from the center, hinge).
 // L is the length scale of the two end circles. Derivatives are exact:
 // Ceres Jets through the same series code (reparameterize, Hermite basis,
-// prcs_planes / prrs_planes, intersect, the rotation formula). This is the
-// one tier that allocates (Ceres).
+// prcs_planes / prrs_planes, intersect, the circle's rational quadratic).
+// This is the one tier that allocates (Ceres).
 #pragma once
 
 #include "cyclide/blend.hpp"
@@ -71,7 +72,7 @@ struct BlendOptions {
 };
 
 enum class BlendTermination : int {
-  converged = 0,        // a Ceres tolerance was met
+  converged = 0,        // a tolerance was met (function, gradient, parameter as Ceres')
   iteration_limit = 1,  // max_iterations reached (the best point is kept)
   reverted = 2,         // the optimum did not give a valid blend: the start is returned
 };

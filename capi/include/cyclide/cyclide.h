@@ -698,9 +698,9 @@ CYC_API int cyc_optimize_closest_point(cyc_context* ctx, const cyc_surface* surf
 /* ------------------------------------------------------------ blend optimizer */
 
 /* The free parameters of a blend — the jets (lambda = phi', phi'', ...) of
- * both ends, see cyc_blend_end — chosen by Levenberg-Marquardt (Ceres,
- * exact derivatives by automatic differentiation through the construction)
- * against a weighted objective (SPEC.md §8e). */
+ * both ends, see cyc_blend_end — chosen by a box-constrained
+ * Levenberg-Marquardt (exact derivatives by Ceres' automatic differentiation
+ * through the construction) against a weighted objective (SPEC.md §8e). */
 #define CYC_BLEND_CANAL 0  /* cyc_blend_canal: K in 2..CYC_MAX_BLEND_ORDER */
 #define CYC_BLEND_RINGED 1 /* cyc_blend_ringed: K in 1..CYC_MAX_BLEND_ORDER */
 #define CYC_MAX_QUADRATURE 16
@@ -757,7 +757,7 @@ typedef struct cyc_optimize_options {
   double lambda_max_ratio;   /* >= 1, default 4 */
   double higher_bound;       /* >= 0, default 4 */
   int max_iterations;        /* >= 0 (0: the start blend), default 50 */
-  double function_tolerance; /* Ceres' tolerances, default 1e-8 */
+  double function_tolerance; /* tolerances as Ceres' (SPEC §8e), default 1e-8 */
   double gradient_tolerance; /* default 1e-10 */
   double parameter_tolerance; /* default 1e-8 */
 } cyc_optimize_options;
