@@ -337,3 +337,24 @@ TEST(RingedBlendPCurve, RegressionTinyTauIsOverflow) {
   EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
             Status::not_finite);
 }
+
+// fuzz_ringed regress-tiny-v: v = (0, 1e-308, 1e-245) is a valid direction
+// (e3 up to rounding); its norm underflowed and it was taken for zero.
+TEST(RingedBlendPCurve, RegressionTinyProjectionDirection) {
+  Surface pieces[2], ref[2];
+  int count = 0, ref_count = 0;
+  RingedBlendOptions o;
+  o.v = Vec3d(0, 1e-308, 1e-245);
+  ASSERT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::ok);
+  ASSERT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), RingedBlendOptions(),
+                                     ref, ref_count),
+            Status::ok);
+  EXPECT_LT((point(pieces[0], 0.5, 1.0) - point(ref[0], 0.5, 1.0)).norm(), 1e-12);
+  o.tau = 1.0;
+  EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::bad_domain);
+  o.v = Vec3d::Zero();
+  EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
+            Status::invalid_argument);
+}

@@ -364,9 +364,12 @@ namespace {
 
 Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
                     Surface (&pieces)[2], int& count, double* bad_u) {
-  if (!(options.v.norm() > 0)) return Status::invalid_argument;
+  // v scaled by its largest component before normalizing: |v| of a tiny v
+  // (components ~1e-245, fuzz_ringed regress-tiny-v) underflows to 0.
+  const double vmax = options.v.cwiseAbs().maxCoeff();
+  if (!(vmax > 0)) return Status::invalid_argument;
   if (options.tau != 0.0 && !(options.tau > 0 && options.tau < 1)) return Status::bad_domain;
-  const Eigen::Matrix3d M = to_e3(options.v.normalized());
+  const Eigen::Matrix3d M = to_e3((options.v / vmax).normalized());
   // Data in the frame where v = e3 (38), (39).
   const Vec3d d0 = M * a.d, dd0 = M * a.dd, n0 = M * a.n, dn0 = M * a.dn;
   const Vec3d d1 = M * b.d, dd1 = M * b.dd, n1 = M * b.n, dn1 = M * b.dn;
