@@ -232,11 +232,11 @@ void to_zero_infinity_one(const T (&z)[3][2], T (&M)[2][2]) {
 // (M_w^-1 as the adjugate: homogeneous, no division).
 // jet[k][l] = l-th t-derivative of alpha, beta, gamma, delta (k = 0..3).
 template <int N>
-Status end_mobius(const Surface& S, const RationalCurve* p, const BlendEnd& e, double te,
+Status end_mobius(const RationalCurve* p, const BlendEnd& e, double te,
                   double (&jet)[4][kMaxBlendOrder + 1]) {
   using T = Taylor<double, N>;
-  CircleFrame<T> F;
-  if (Status st = S.frame<N>(te, F); st != Status::ok) return st;
+  CircleFrame<T> F;  // the blend's frame with f = v, straight from its curves
+  if (Status st = prrs_frame<N>(p[0], p[1], p[2], te, F); st != Status::ok) return st;
   T w[3][2], v[3][2];
   for (int j = 0; j < 3; ++j) {
     circle_parameter<N>(F, p[j].taylor<N>(te), w[j]);
@@ -266,7 +266,7 @@ Status end_mobius(const Surface& S, const RationalCurve* p, const BlendEnd& e, d
 // relative to the blend: a continuous family of Mobius maps cannot change
 // it, so different signs are degenerate_circle_parameter (at t1). Whether
 // the interpolant stays regular inside is checked by make_prrs' domain scan.
-Status matched_circles(const Surface& S, const RationalCurve* p, const BlendEnd& start,
+Status matched_circles(const RationalCurve* p, const BlendEnd& start,
                        const BlendEnd& end, int K, double t0, double t1, Mobius& f,
                        double* bad_u) {
   const BlendEnd* ends[2] = {&start, &end};
@@ -275,7 +275,7 @@ Status matched_circles(const Surface& S, const RationalCurve* p, const BlendEnd&
   double det[2];
   for (int e = 0; e < 2; ++e) {
     const Status st = with_order(K, [&](auto n) -> Status {
-      return end_mobius<decltype(n)::value>(S, p, *ends[e], te[e], jet[e]);
+      return end_mobius<decltype(n)::value>(p, *ends[e], te[e], jet[e]);
     });
     if (st != Status::ok) {
       if (bad_u) *bad_u = te[e];
@@ -321,18 +321,18 @@ Status make_ringed_blend(const BlendEnd& start, const BlendEnd& end, int K, doub
     return Status::invalid_argument;
   RationalCurve p[3];
   if (Status st = blend_curves(start, end, K, t0, t1, 3, p); st != Status::ok) return st;
-  Surface S;
-  if (Status st = make_prrs(p[0], p[1], p[2], nullptr, t0, t1, S, bad_u); st != Status::ok)
-    return st == Status::not_finite ? Status::numerical_overflow : st;
-  if (circles == BlendCircles::matched) {
-    // The same circles, reparameterized by f(t, v) (the surface with f = v
-    // provides the frames the end maps are measured in).
-    Mobius f;
-    if (Status st = matched_circles(S, p, start, end, K, t0, t1, f, bad_u); st != Status::ok)
+  // Matched: the same circles, reparameterized by f(t, v); the end maps are
+  // measured in the frames of f = v, taken straight from the curves, so the
+  // surface is built (scanned, compiled) once.
+  Mobius f;
+  const bool matched = circles == BlendCircles::matched;
+  if (matched)
+    if (Status st = matched_circles(p, start, end, K, t0, t1, f, bad_u); st != Status::ok)
       return st;
-    if (Status st = make_prrs(p[0], p[1], p[2], &f, t0, t1, S, bad_u); st != Status::ok)
-      return st == Status::not_finite ? Status::numerical_overflow : st;
-  }
+  Surface S;
+  if (Status st = make_prrs(p[0], p[1], p[2], matched ? &f : nullptr, t0, t1, S, bad_u);
+      st != Status::ok)
+    return st == Status::not_finite ? Status::numerical_overflow : st;
   out = S;
   if (curves)
     for (int j = 0; j < 3; ++j) curves[j] = p[j];
