@@ -358,3 +358,37 @@ TEST(RingedBlendPCurve, RegressionTinyProjectionDirection) {
   EXPECT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, pieces, count),
             Status::invalid_argument);
 }
+
+// The CI case of PCurveProperties.BlendReproducesTheEndJetsOrIsRefused: at
+// the end b, n is nearly parallel to v (kappa = |n||v|/|n x v| = 696), so
+// sigma = |p| is small there and the end jet is read back to ~1e-7 only —
+// within the stated max(1e-8, 1e-11 kappa^2) of the data's scale, and far
+// better at the well-conditioned end a.
+TEST(RingedBlendPCurve, RegressionNearlyParallelEndIsConditioned) {
+  RingedJet a, b;
+  a.d = Vec3d(-64, -63, -64) / 16;
+  a.dd = Vec3d(-63, -64, -64) / 16;
+  a.n = a.dn = Vec3d(-4, -4, -4);
+  a.rho = 4.25;
+  a.drho = -1;
+  b = a;
+  b.d = Vec3d(2, -2, -4);
+  b.dd = Vec3d(-4, -4, -4);
+  b.n = Vec3d(-19, 18, -56) / 16;
+  RingedBlendOptions o;
+  o.sign = -1;
+  o.v = Vec3d(-17, 16, -50) / 16;
+  const double kappa = b.n.norm() * o.v.norm() / b.n.cross(o.v).norm();
+  EXPECT_NEAR(kappa, 696.3, 0.1);
+  Surface P[2];
+  int count = 0;
+  ASSERT_EQ(make_ringed_pcurve_blend(a, b, o, P, count), Status::ok);
+  RingedJet Ka, Kb;
+  ASSERT_EQ(ringed_jet(P[0], 0.0, Ka), Status::ok);
+  ASSERT_EQ(ringed_jet(P[0], 1.0, Kb), Status::ok);
+  const double scale = 34.0;  // 1 + |d| + |d'| + |n| + |n'| + rho + |rho'|
+  EXPECT_LT((Ka.dd - a.dd).norm(), 1e-12 * scale);
+  EXPECT_LT((Kb.dd - b.dd).norm(), 1e-11 * kappa * kappa * scale);
+  EXPECT_LT(std::abs(Kb.drho - b.drho), 1e-11 * kappa * kappa * scale);
+  EXPECT_LT((Kb.n - b.n).norm(), 1e-10 * scale);
+}

