@@ -2349,6 +2349,100 @@ static void test_matched_blend(cyc_context* ctx, const cyc_blend_end* s, const c
 
 /* Ringed surfaces (d, n, rho) of seed 001: a cylinder from (d, n, c), and
  * the P-curve blend of Example 4.1 (the transcription's s(1/2, 0)). */
+/* Ringed surfaces (d, n, rho) from their functions (seed 001 §3): the field
+ * methods (Prop. 3.2, Example 3.3, (20)-(23)) and Prop. 3.1's P-curves. */
+static void test_ringed_dnr(cyc_context* ctx) {
+  /* d(u) = (u, 2u, -u), n quadratic (Example 3.3), n cubic, rho = 1.5 + u/4. */
+  const double dc[6] = {0, 0, 0, 1, 2, -1};
+  const double nq[9] = {0.5, -1, 3, 0, 2, 1, 1, 0, 0};
+  const double ncub[12] = {1, -2, 0.5, 0, 1, 3, 2, 0, -1, 0.5, 1, 0.25};
+  const double rho[2] = {1.5, 0.25}, zero_den[1] = {0}, nan_rho[1] = {NAN};
+  const double xq[8] = {1, 0, 0.5, 0, 0, 1, 0, -1}; /* x(u) = (1, u, 0.5, -u) */
+  cyc_curve *d = NULL, *nquad = NULL, *ncubic = NULL, *le = NULL;
+  cyc_surface* S = SURF_SENT;
+  cyc_ringed_field_options o;
+  cyc_ringed_field_report rep, untouched;
+  double x[3], dd[3];
+  int kind = 0, k;
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, dc, 3, &d), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, nq, 3, &nquad), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 3, ncub, 3, &ncubic), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_line_element(ctx, dc, dc + 3, &le), CYC_OK);
+  cyc_ringed_field_options_init(&o);
+  CHECK(o.method == CYC_RINGED_FIELD_AUTO && o.v[2] == 1 && o.which == 0);
+  memset(&untouched, 0x5a, sizeof untouched);
+  rep = untouched;
+  /* Errors leave S and the report untouched. */
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, NULL, 1, rho, 0, NULL, NULL, NULL, -1, 2, &S, &rep),
+               CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, nquad, 0, nan_rho, 0, NULL, NULL, NULL, -1, 2, &S, &rep),
+               CYC_E_NOT_FINITE);
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, nquad, 1, rho, 0, zero_den, NULL, NULL, -1, 2, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  o.method = CYC_RINGED_FIELD_PROJECTION; /* along z: |n x e3| is not a polynomial */
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, nquad, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+               CYC_E_NOT_PYTHAGOREAN);
+  o.v[2] = 0;
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, nquad, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  o.method = CYC_RINGED_FIELD_QUADRATIC;
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, ncubic, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  o.which = 2;
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, nquad, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  o.method = 7;
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, nquad, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  o.method = CYC_RINGED_FIELD_SOS;
+  CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, le, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK(S == SURF_SENT && memcmp(&rep, &untouched, sizeof rep) == 0);
+  /* AUTO on the quadratic n: Example 3.3, exact; the point lies on its
+   * circle: |x - d| = rho, (x - d).n = 0. */
+  for (k = 0; k < 2; ++k) {
+    cyc_ringed_field_options_init(&o);
+    o.method = k == 0 ? CYC_RINGED_FIELD_AUTO : CYC_RINGED_FIELD_SOS;
+    S = SURF_SENT;
+    CHECK_STATUS(ctx, cyc_ringed_dnr_create(ctx, d, k == 0 ? nquad : ncubic, 1, rho, 0, NULL,
+                                            &o, NULL, -1, 2, &S, &rep),
+                 CYC_OK);
+    if (S == SURF_SENT || !S) continue;
+    CHECK(rep.method == (k == 0 ? CYC_RINGED_FIELD_QUADRATIC : CYC_RINGED_FIELD_SOS));
+    if (k == 0) CHECK(rep.directions == 2 && fabs(rep.v[0] * rep.v[0] + rep.v[1] * rep.v[1] + rep.v[2] * rep.v[2] - 1) < 1e-14 && rep.sos_residual == 0);
+    if (k == 1) CHECK(rep.sos_residual < 1e-13 && rep.sos_margin > 0 && rep.sos_margin <= 4);
+    CHECK_STATUS(ctx, cyc_surface_kind(ctx, S, &kind), CYC_OK);
+    CHECK(kind == CYC_SURFACE_RINGED);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.5, 0.3, x, NULL, NULL, NULL), CYC_OK);
+    dd[0] = 0.5; dd[1] = 1; dd[2] = -0.5;
+    CHECK(fabs(dist3(x, dd) - (1.5 + 0.125)) < 1e-12);
+    cyc_surface_destroy(ctx, S);
+  }
+  /* Prop. 3.1: n = P-curve of x(u) = 1 + u i + 0.5 j - u k; |f| = 1 exactly,
+   * so every point is at distance rho from d. */
+  S = SURF_SENT;
+  CHECK_STATUS(ctx, cyc_ringed_pcurve_create(ctx, d, 1, xq, 0.3, 1, rho, 0, NULL, NULL, -1, 2, &S),
+               CYC_OK);
+  if (S != SURF_SENT && S) {
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, -0.5, 4.0, x, NULL, NULL, NULL), CYC_OK);
+    dd[0] = -0.5; dd[1] = -1; dd[2] = 0.5;
+    CHECK(fabs(dist3(x, dd) - (1.5 - 0.125)) < 1e-12);
+    cyc_surface_destroy(ctx, S);
+  }
+  S = SURF_SENT;
+  CHECK_STATUS(ctx, cyc_ringed_pcurve_create(ctx, d, 1, NULL, 0.3, 1, rho, 0, NULL, NULL, -1, 2, &S),
+               CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_ringed_pcurve_create(ctx, d, 8, xq, 0.3, 1, rho, 0, NULL, NULL, -1, 2, &S),
+               CYC_E_DEGREE_TOO_HIGH);
+  CHECK_STATUS(ctx, cyc_ringed_pcurve_create(ctx, d, 1, xq, NAN, 1, rho, 0, NULL, NULL, -1, 2, &S),
+               CYC_E_NOT_FINITE);
+  CHECK(S == SURF_SENT);
+  cyc_curve_destroy(ctx, d);
+  cyc_curve_destroy(ctx, nquad);
+  cyc_curve_destroy(ctx, ncubic);
+  cyc_curve_destroy(ctx, le);
+}
+
 static void test_ringed(cyc_context* ctx) {
   const double O[3] = {0, 0, 0}, Z[3] = {0, 0, 1}, X1[3] = {1, 0, 0};
   cyc_curve *d = NULL, *n = NULL, *c = NULL, *le = NULL, *zero = NULL;
@@ -2529,6 +2623,8 @@ int main(void) {
     test_classify(ctx);
     test_blends(ctx);
     test_ringed(ctx);
+    test_ringed_dnr(ctx);
+  test_ringed_dnr(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

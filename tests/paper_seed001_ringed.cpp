@@ -145,6 +145,115 @@ TEST(PCurve, Proposition32Projection) {
   EXPECT_FALSE(poly_sqrt(poly({1, 2}), q));      // odd degree
 }
 
+// |f| = 1 and f.n = 0 of a rational field at sample parameters.
+void expect_unit_perpendicular(const RationalField& f, const RationalCurve& n, double tol) {
+  for (double t : {-3.0, -1.0, -0.25, 0.0, 0.5, 1.0, 2.0, 7.0}) {
+    const Vec3d F = eval3(f.F, t) / f.w(t), N = n.point(t);
+    EXPECT_NEAR(F.norm(), 1.0, tol) << "t = " << t;
+    EXPECT_NEAR(F.dot(N) / N.norm(), 0.0, tol) << "t = " << t;
+  }
+}
+
+// Example 3.3, eqs. (17)-(19): for a quadratic n with independent
+// coefficient vectors no coordinate direction makes |n x v| a polynomial,
+// but two directions v (the real solutions of (19) the paper proves to
+// exist) do, and Prop. 3.2 then gives an exact unit field f = n x v / sigma.
+TEST(PCurve, Example33QuadraticOrientation) {
+  RationalCurve n;
+  // n(t) = (1, 0, 0) t^2 + (0, 2, 1) t + (0.5, -1, 3): rows t^0, t^1, t^2.
+  const double nc[9] = {0.5, -1, 3, 0, 2, 1, 1, 0, 0};
+  ASSERT_EQ(make_polynomial_curve(2, nc, n), Status::ok);
+  RationalField f;
+  for (const Vec3d& e : {Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)})
+    EXPECT_EQ(projection_field(n, e, f), Status::not_pythagorean);
+  Vec3d v[2];
+  int count = 0;
+  ASSERT_EQ(quadratic_projection_directions(n, v, count), Status::ok);
+  EXPECT_EQ(count, 2);
+  EXPECT_LT(std::abs(v[0].dot(v[1])), 1 - 1e-6);  // two different planes
+  for (int i = 0; i < count; ++i) {
+    EXPECT_NEAR(v[i].norm(), 1.0, 1e-15);
+    ASSERT_EQ(projection_field(n, v[i], f), Status::ok);
+    EXPECT_EQ(f.w.deg, 2);  // sigma = |A| |t - r|^2
+    expect_unit_perpendicular(f, n, 1e-12);
+  }
+  // The ringed surface (d, n, rho) with this f is rational (Prop. 3.2):
+  // every point lies on its circle.
+  RationalCurve d, c, line;
+  const double dc[6] = {0, 0, 0, 1, 2, -1};
+  ASSERT_EQ(make_polynomial_curve(1, dc, d), Status::ok);
+  ASSERT_EQ(projection_field(n, v[0], f), Status::ok);
+  ASSERT_EQ(ringed_curve(d, poly({1.5, 0.25}), poly({1.0}), f, c), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_ringed(d, n, c, nullptr, -1, 2, S), Status::ok);
+  for (double t : {-1.0, 0.3, 2.0})
+    for (double u : {-2.0, 0.0, 0.7, 40.0}) {
+      const Vec3d X = point(S, t, u), D = d.point(t), N = n.point(t).normalized();
+      EXPECT_NEAR((X - D).norm(), 1.5 + 0.25 * t, 1e-12);
+      EXPECT_NEAR((X - D).dot(N), 0.0, 1e-12);
+    }
+  // Degenerate inputs: cubic n, a rational n, a point.
+  const double cub[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  ASSERT_EQ(make_polynomial_curve(3, cub, line), Status::ok);
+  EXPECT_EQ(quadratic_projection_directions(line, v, count), Status::invalid_argument);
+  ASSERT_EQ(make_point(Vec3d(1, 2, 3), line), Status::ok);
+  EXPECT_EQ(quadratic_projection_directions(line, v, count), Status::invalid_argument);
+  // A constant n: any direction perpendicular to it.
+  const double k[3] = {0, 0, 2};
+  ASSERT_EQ(make_polynomial_curve(0, k, line), Status::ok);
+  ASSERT_EQ(quadratic_projection_directions(line, v, count), Status::ok);
+  EXPECT_EQ(count, 1);
+  EXPECT_NEAR(v[0].z(), 0.0, 1e-15);
+}
+
+// Eqs. (20)-(23): the stereographic field with a numerical sum of squares
+// |n|^2 = g1^2 + g2^2 (21) for a cubic n that is neither a P-curve nor has
+// a P-curve projection; f is a unit field perpendicular to n to the
+// reported remainder. A horizontal n (n3 = 0: the pole (0, 0, 1) lies on
+// every circle, Remark 3.4) takes another pole.
+TEST(PCurve, Equations20To23SosField) {
+  RationalCurve n;
+  const double nc[12] = {1, -2, 0.5, 0, 1, 3, 2, 0, -1, 0.5, 1, 0.25};
+  ASSERT_EQ(make_polynomial_curve(3, nc, n), Status::ok);
+  RationalField f;
+  SosFieldReport rep;
+  ASSERT_EQ(sos_field(n, f, &rep), Status::ok);
+  EXPECT_LT(rep.residual, 1e-13);
+  EXPECT_GT(rep.margin, 1e-3);
+  EXPECT_EQ(f.w.deg, 6);
+  expect_unit_perpendicular(f, n, 1e-12);
+  // The denominator |H|^2 + n3^2 has no real root.
+  for (int k = -200; k <= 200; ++k) EXPECT_GT(f.w(k / 20.0), 0.0);
+  // The rational ringed surface (Theorem 3.5).
+  RationalCurve d, c;
+  const double dc[6] = {1, 1, 1, 0, 0, 1};
+  ASSERT_EQ(make_polynomial_curve(1, dc, d), Status::ok);
+  ASSERT_EQ(ringed_curve(d, poly({2.0}), poly({1.0}), f, c), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_ringed(d, n, c, nullptr, -2, 2, S), Status::ok);
+  for (double t : {-2.0, 0.1, 1.7})
+    for (double u : {-1.0, 0.0, 3.0}) {
+      const Vec3d X = point(S, t, u), D = d.point(t), N = n.point(t).normalized();
+      EXPECT_NEAR((X - D).norm(), 2.0, 1e-11);
+      EXPECT_NEAR((X - D).dot(N), 0.0, 1e-11);
+    }
+  // n3 = 0: the z pole is skipped.
+  const double hc[9] = {1, 0, 0, 0, 1, 0, 1, 1, 0};
+  RationalCurve h;
+  ASSERT_EQ(make_polynomial_curve(2, hc, h), Status::ok);
+  ASSERT_EQ(sos_field(h, f, &rep), Status::ok);
+  EXPECT_NE(rep.pole_axis, 2);
+  expect_unit_perpendicular(f, h, 1e-12);
+  // Statuses.
+  const double zero[3] = {0, 0, 0};
+  ASSERT_EQ(make_polynomial_curve(0, zero, h), Status::ok);
+  EXPECT_EQ(sos_field(h, f, &rep), Status::invalid_argument);
+  double big[3 * 9] = {};
+  big[3 * 8] = 1;
+  ASSERT_EQ(make_polynomial_curve(8, big, h), Status::ok);
+  EXPECT_EQ(sos_field(h, f, &rep), Status::degree_too_high);
+}
+
 // Eq. (43) on Example 4.1's planar data (39): p0 = 1 + i, v0 = i, p1 = 4,
 // v1 = i, principal roots, + sign; and x = w^2, sigma = |w|^2.
 TEST(PCurve, Equation43Example41) {

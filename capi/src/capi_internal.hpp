@@ -203,6 +203,15 @@ inline void put3(double* dst, const Vec3d& v) {
   dst[2] = v.z();
 }
 
+// The circle parameter f of a creator (NULL: f = v, m untouched).
+inline Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
+  if (!f) return ok();
+  if (Status s = make_mobius(f->degree, f->alpha, f->beta, f->gamma, f->delta, m);
+      s != Status::ok)
+    return fail(int(s), "%s: circle parameter f: %s", fn, explain(s));
+  return ok();
+}
+
 // Hand a new curve to the caller.
 template <class H, class T>
 Outcome emit(const char* fn, cyc_context* ctx, H** out, const T& value) {

@@ -55,14 +55,6 @@ using namespace cyclide::capi;
 
 namespace {
 
-Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
-  if (!f) return ok();
-  if (Status s = make_mobius(f->degree, f->alpha, f->beta, f->gamma, f->delta, m);
-      s != Status::ok)
-    return fail(int(s), "%s: circle parameter f: %s", fn, explain(s));
-  return ok();
-}
-
 // cyc_prrs_create and cyc_ringed_create: three curves, a Mobius f, a domain.
 template <class Make>
 Outcome three_curve_surface(const char* fn, cyc_context* ctx, const cyc_curve* const (&in)[3],

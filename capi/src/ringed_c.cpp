@@ -23,9 +23,133 @@ RingedJet jet_of(const cyc_ringed_jet& j) {
   return J;
 }
 
+// rho = rho_num / rho_den from power-form coefficient arrays (rho_den NULL:
+// 1).
+Outcome radius_from(const char* fn, int num_degree, const double* num, int den_degree,
+                    const double* den, CurvePoly& rn, CurvePoly& rd) {
+  REQUIRE(num);
+  if (num_degree < 0 || (den && den_degree < 0))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: negative degree of rho", fn);
+  if (num_degree > kMaxCurveDegree || (den && den_degree > kMaxCurveDegree))
+    return fail(CYC_E_DEGREE_TOO_HIGH, "%s: degree of rho above %d", fn, kMaxCurveDegree);
+  for (int k = 0; k <= num_degree; ++k)
+    if (!std::isfinite(num[k])) return fail(CYC_E_NOT_FINITE, "%s: rho_num[%d] is not finite", fn, k);
+  if (den)
+    for (int k = 0; k <= den_degree; ++k)
+      if (!std::isfinite(den[k]))
+        return fail(CYC_E_NOT_FINITE, "%s: rho_den[%d] is not finite", fn, k);
+  rn.assign(num, num_degree);
+  rd = CurvePoly(1.0);
+  if (den) rd.assign(den, den_degree);
+  if (rd.is_zero()) return fail(CYC_E_INVALID_ARGUMENT, "%s: rho_den is zero", fn);
+  return ok();
+}
+
+// The message of a failed ringed creation.
+Outcome ringed_failure(const char* fn, Status s, double bad_u) {
+  if (s == Status::not_pythagorean)
+    return fail(int(s), "%s: %s (|n x v| is not a polynomial, or the SOS roots are too "
+                "ill-conditioned)", fn, explain(s));
+  if (s == Status::invalid_argument)
+    return fail(int(s), "%s: %s (v = 0, which not 0/1 or beyond the directions found, "
+                "QUADRATIC for deg n > 2, n = 0, a line element, or an unknown method)",
+                fn, explain(s));
+  return located(s) && std::isfinite(bad_u) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
+}
+
 }  // namespace
 
 extern "C" {
+
+void cyc_ringed_field_options_init(cyc_ringed_field_options* options) {
+  if (!options) return;
+  const RingedFieldOptions d;
+  options->method = int(d.method);
+  put3(options->v, d.v);
+  options->which = d.which;
+}
+
+int cyc_ringed_dnr_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                          int rho_num_degree, const double* rho_num, int rho_den_degree,
+                          const double* rho_den, const cyc_ringed_field_options* options,
+                          const cyc_mobius* f, double u0, double u1, cyc_surface** out,
+                          cyc_ringed_field_report* report) {
+  const char* fn = "cyc_ringed_dnr_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(n);
+    REQUIRE(out);
+    CurvePoly rn, rd;
+    if (Outcome o = radius_from(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, rn, rd);
+        o.status)
+      return o;
+    Mobius m;
+    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+    RingedFieldOptions o;
+    if (options) {
+      if (options->method < 0 || options->method > 3)
+        return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown method %d", fn, options->method);
+      o.method = RingedFieldMethod(options->method);
+      o.v = vec(options->v);
+      o.which = options->which;
+    }
+    Surface S;
+    RingedFieldReport rep;
+    double bad_u = NAN;
+    if (Status s = make_ringed_dnr(d->curve, n->curve, rn, rd, o, f ? &m : nullptr, u0, u1, S,
+                                   &rep, &bad_u);
+        s != Status::ok)
+      return ringed_failure(fn, s, bad_u);
+    if (Outcome e = emit(fn, ctx, out, S); e.status) return e;
+    if (report) {
+      cyc_ringed_field_report R;
+      R.method = int(rep.method);
+      put3(R.v, rep.v);
+      R.directions = rep.directions;
+      R.sos_residual = rep.sos.residual;
+      R.sos_margin = rep.method == RingedFieldMethod::sos ? rep.sos.margin : 0.0;
+      *report = R;
+    }
+    return ok();
+  });
+}
+
+int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x_degree,
+                             const double* x, double phi, int rho_num_degree,
+                             const double* rho_num, int rho_den_degree, const double* rho_den,
+                             const cyc_mobius* f, double u0, double u1, cyc_surface** out) {
+  const char* fn = "cyc_ringed_pcurve_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(x);
+    REQUIRE(out);
+    if (x_degree < 0) return fail(CYC_E_INVALID_ARGUMENT, "%s: x_degree < 0", fn);
+    if (x_degree > kMaxCurveDegree)
+      return fail(CYC_E_DEGREE_TOO_HIGH, "%s: x_degree above %d", fn, kMaxCurveDegree);
+    CurvePoly rn, rd;
+    if (Outcome o = radius_from(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, rn, rd);
+        o.status)
+      return o;
+    Mobius m;
+    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+    CurvePoly q[4];
+    for (int i = 0; i < 4; ++i) {
+      double c[kMaxCurveDegree + 1];
+      for (int k = 0; k <= x_degree; ++k) c[k] = x[4 * k + i];
+      q[i].assign(c, x_degree);
+    }
+    Surface S;
+    double bad_u = NAN;
+    if (Status s = make_ringed_pcurve(d->curve, q, phi, rn, rd, f ? &m : nullptr, u0, u1, S,
+                                      &bad_u);
+        s != Status::ok) {
+      if (s == Status::invalid_argument)
+        return fail(int(s), "%s: %s (x = 0, or d is a line element)", fn, explain(s));
+      return located(s) && std::isfinite(bad_u) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
+    }
+    return emit(fn, ctx, out, S);
+  });
+}
 
 int cyc_surface_ringed_jet(cyc_context* ctx, const cyc_surface* surface, double u,
                            cyc_ringed_jet* out) {

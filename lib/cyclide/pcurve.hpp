@@ -58,6 +58,94 @@ bool poly_sqrt(const CurvePoly& p, CurvePoly& q, double tol = 1e-10, double* res
 // (Prop. 3.2 does not apply), invalid_argument for a rational n or |v| != 1.
 Status projection_field(const RationalCurve& n, const Vec3d& v, RationalField& out);
 
+// Example 3.3, eqs. (17)-(19): for a quadratic (or linear, or constant)
+// polynomial orientation function n = a t^2 + b t + c, the unit directions
+// v for which |n x v|^2 = |n|^2 - (n.v)^2 is a polynomial square, so that
+// Prop. 3.2 applies. The projection of n onto the plane perpendicular to v,
+// written in the complex coordinate z(x) = x.e for an isotropic e = e1 + i e2
+// (e1, e2 an orthonormal basis of that plane), is p(t) = A t^2 + B t + C;
+// |p|^2 is a square iff p = A (t - r)^2 (or is constant), i.e. iff the
+// discriminant B^2 - 4AC = e^T M e vanishes, M = b b^T - 2 (a c^T + c a^T).
+// With M's eigenvalues l1 >= l2 >= l3 (eigenvectors q1, q2, q3), the
+// isotropic solutions are e = sqrt(l2 - l3) q1 +- i sqrt(l1 - l3) q2 +
+// sqrt(l1 - l2) q3 (up to signs), whose plane has the real normal
+// v = sqrt(l2 - l3) q3 -+ sqrt(l1 - l2) q1 (normalized): a real solution
+// exists for every quadratic n, as the paper states. Writes the distinct
+// directions (1 or 2) that pass projection_field's square-root test to
+// v[0..count-1]. invalid_argument for a rational n (its numerator is taken
+// when its weight is constant) or degree > 2; not_pythagorean if no candidate
+// passes (rounding on nearly repeated eigenvalues).
+Status quadratic_projection_directions(const RationalCurve& n, Vec3d (&v)[2], int& count);
+
+// Eqs. (20)-(23) for any polynomial (or rational: its numerator N spans the
+// same planes) orientation function n: a sum of squares |N|^2 = g1^2 + g2^2
+// (21), the stereographic image h = s + g/n3 (20), (22) and its inverse
+// (23), written with H = g - (n1, n2) as
+//   f = (2 H1 n3, 2 H2 n3, |H|^2 - n3^2) / (|H|^2 + n3^2),
+// a rational unit field with f.n = 0. The SOS is NUMERICAL: g1 + i g2 =
+// sqrt(lead) prod (t - z_k) over the roots z_k of |N|^2 in the upper half
+// plane (companion-matrix eigenvalues, Eigen, polished by Newton), so |f| = 1
+// and f.n = 0 hold to the reported relative remainder of |g|^2 - |N|^2. The
+// pole of the stereographic projection (the z, x or y axis) and a constant
+// rotation g -> e^{i theta} g are chosen so that the denominator stays away
+// from zero at the real roots of n3 (the only places it can vanish).
+struct SosFieldReport {
+  double residual = 0.0;  // max |coef(|g|^2 - |N|^2)| / max |coef(|N|^2)|
+  double margin = 0.0;    // min over real roots of n3 of (|H|^2 + n3^2) / |N|^2, in [0, 4]; 4 if none
+  int pole_axis = 2;      // 0, 1, 2: stereographic pole on the x, y, z axis
+  double theta = 0.0;     // the rotation of g
+};
+// degree_too_high if 2 deg N > kMaxCurveDegree; invalid_argument for n = 0
+// or a point/line element; not_finite for non-finite coefficients;
+// not_pythagorean if the remainder exceeds 1e-8 (roots too ill-conditioned)
+// or the denominator vanishes somewhere for every pole and rotation.
+Status sos_field(const RationalCurve& n, RationalField& out, SosFieldReport* report = nullptr);
+
+// How make_ringed_dnr finds the rational unit field f perpendicular to n.
+enum class RingedFieldMethod : int {
+  automatic = 0,   // an exact route if one exists, else sos: projection along
+                   // e3, e1, e2 (Prop. 3.2), then Example 3.3 for deg n <= 2
+  projection = 1,  // Prop. 3.2 along options.v
+  quadratic = 2,   // Example 3.3 (deg n <= 2): solution options.which of v
+  sos = 3,         // eqs. (20)-(23), numerical
+};
+struct RingedFieldOptions {
+  RingedFieldMethod method = RingedFieldMethod::automatic;
+  Vec3d v = Vec3d::UnitZ();  // projection: any nonzero length
+  int which = 0;             // quadratic: 0 or 1 (if two solutions)
+};
+struct RingedFieldReport {
+  RingedFieldMethod method = RingedFieldMethod::automatic;  // the route taken
+  Vec3d v = Vec3d::Zero();  // projection / quadratic: the direction used
+  int directions = 0;       // quadratic: the number of solutions found
+  SosFieldReport sos;       // sos: the SOS step's accuracy (zeros otherwise)
+};
+// The field f of n by the chosen method. invalid_argument: v = 0, which
+// not 0/1 or beyond the solutions found, quadratic for deg n > 2; then
+// the statuses of projection_field, quadratic_projection_directions and
+// sos_field.
+Status ringed_field(const RationalCurve& n, const RingedFieldOptions& options, RationalField& f,
+                    RingedFieldReport* report = nullptr);
+
+// The ringed surface R : (d, n, rho), rho = rho_num / rho_den, as the
+// rational surface (3) through c = d + rho f (4) with f = ringed_field(n):
+// Props. 3.1/3.2, Example 3.3, Theorem 3.5. Statuses of ringed_field,
+// ringed_curve and make_ringed (*bad_u where the domain scan fails: where
+// sigma or the SOS denominator vanishes the field is undefined and c
+// escapes, reported as that scan's status).
+Status make_ringed_dnr(const RationalCurve& d, const RationalCurve& n, const CurvePoly& rho_num,
+                       const CurvePoly& rho_den, const RingedFieldOptions& options,
+                       const Mobius* circle_f, double u0, double u1, Surface& out,
+                       RingedFieldReport* report = nullptr, double* bad_u = nullptr);
+
+// Prop. 3.1: the ringed surface whose orientation function is the P-curve
+// n of the quaternion polynomial x (8), with f = (cos phi n1 + sin phi n2)
+// / sigma (12). Statuses of pcurve_frame, ringed_curve and make_ringed.
+Status make_ringed_pcurve(const RationalCurve& d, const CurvePoly (&x)[4], double phi,
+                          const CurvePoly& rho_num, const CurvePoly& rho_den,
+                          const Mobius* circle_f, double u0, double u1, Surface& out,
+                          double* bad_u = nullptr);
+
 // Eq. (4): c = d + rho f with rho = rho_num / rho_den, as one rational
 // curve (power form): (D rho_den w_f + w_d rho_num F) / (w_d rho_den w_f).
 // d is a polynomial or rational curve (power or Bernstein form) or a point.

@@ -649,6 +649,69 @@ CYC_API int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a,
                                     const cyc_pcurve_blend_options* options,
                                     cyc_surface** pieces, int* count);
 
+/* Ringed surfaces R : (d, n, rho) from their three functions (seed 001 §3):
+ * the rational parameterization (3) through the curve c = d + rho f (4), f a
+ * rational unit field perpendicular to n found by one of these methods. */
+#define CYC_RINGED_FIELD_AUTO 0       /* exact if possible (projection along z, x, y; then
+                                         QUADRATIC for deg n <= 2), else SOS */
+#define CYC_RINGED_FIELD_PROJECTION 1 /* Prop. 3.2, eqs. (13)-(16): f = n x v / sigma */
+#define CYC_RINGED_FIELD_QUADRATIC 2  /* Example 3.3, (17)-(19): v found for quadratic n */
+#define CYC_RINGED_FIELD_SOS 3        /* eqs. (20)-(23): numerical sum of squares of |n|^2 */
+
+/** Options of cyc_ringed_dnr_create (initialize with
+ *  cyc_ringed_field_options_init). */
+typedef struct cyc_ringed_field_options {
+  int method;  /* CYC_RINGED_FIELD_* (default AUTO) */
+  double v[3]; /* PROJECTION: the direction, any nonzero length (default (0, 0, 1)) */
+  int which;   /* QUADRATIC: 0 (default) or 1, which of the (up to two) directions */
+} cyc_ringed_field_options;
+CYC_API void cyc_ringed_field_options_init(cyc_ringed_field_options* options);
+
+/** What cyc_ringed_dnr_create did. */
+typedef struct cyc_ringed_field_report {
+  int method;          /* the method used (never AUTO) */
+  double v[3];         /* PROJECTION / QUADRATIC: the unit direction used */
+  int directions;      /* QUADRATIC: the number of directions found (1 or 2) */
+  double sos_residual; /* SOS: max |coef(g1^2 + g2^2 - |N|^2)| / max |coef(|N|^2)|: |f| = 1
+                          and f.n = 0 hold to about this (0 for the exact methods) */
+  double sos_margin;   /* SOS: min (|H|^2 + n3^2) / |N|^2 over the real roots of n3, in (0, 4] */
+} cyc_ringed_field_report;
+
+/** The ringed surface (d, n, rho) with rho = rho_num / rho_den, polynomials in
+ *  power form of degrees rho_num_degree / rho_den_degree (rho_den NULL: 1),
+ *  d a curve or point, n a polynomial or rational curve (for the field only
+ *  its numerator matters: it spans the same planes). The field f by
+ *  options->method (NULL: defaults); report (may be NULL) receives what was
+ *  done. The surface is CYC_SURFACE_RINGED, exact rational for PROJECTION
+ *  and QUADRATIC; for SOS its circles are exact but |f| = 1 only to
+ *  report->sos_residual (the radius is rho |f|). Statuses:
+ *  CYC_E_NOT_PYTHAGOREAN (|n x v| is not a polynomial: Prop. 3.2 does not
+ *  apply; SOS: roots too ill-conditioned), CYC_E_INVALID_ARGUMENT (v = 0,
+ *  which not 0/1 or beyond the directions found, QUADRATIC for deg n > 2, a
+ *  line element, n = 0, an unknown method), CYC_E_DEGREE_TOO_HIGH (SOS: 2 deg
+ *  n > 14; c beyond the degree bound), and those of cyc_ringed_create on the
+ *  domain (where sigma or the SOS denominator vanishes f is undefined).
+ *  All or nothing. */
+CYC_API int cyc_ringed_dnr_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                                  int rho_num_degree, const double* rho_num,
+                                  int rho_den_degree, const double* rho_den,
+                                  const cyc_ringed_field_options* options, const cyc_mobius* f,
+                                  double u0, double u1, cyc_surface** out,
+                                  cyc_ringed_field_report* report);
+
+/** Prop. 3.1: the ringed surface (d, n, rho) whose orientation function n is
+ *  the spatial P-curve (8) of the quaternion polynomial x0 + x1 i + x2 j +
+ *  x3 k, given as x_degree + 1 rows (x0, x1, x2, x3), row k the coefficients
+ *  of u^k; f = (cos phi n1 + sin phi n2) / sigma (10)-(12); rho as in
+ *  cyc_ringed_dnr_create. Exact rational. CYC_E_INVALID_ARGUMENT for x = 0,
+ *  CYC_E_DEGREE_TOO_HIGH for 2 x_degree > CYC_MAX_CURVE_DEGREE, then the
+ *  statuses of cyc_ringed_create. */
+CYC_API int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x_degree,
+                                     const double* x, double phi, int rho_num_degree,
+                                     const double* rho_num, int rho_den_degree,
+                                     const double* rho_den, const cyc_mobius* f, double u0,
+                                     double u1, cyc_surface** out);
+
 /** Continuity of the join of surface a at u = ua and surface b at u = ub
  *  along a common circle, at the points x_a(ua, va[i]) and their closest
  *  points on b's circle. lambda = du_a/du_b. All jumps compare b's
