@@ -2,7 +2,9 @@
 // SPEC §8f, issue 5): cyc_ringed_create from fuzzed curves (polynomials of
 // degree 0..3, points, line elements, NULL), cyc_blend_ringed_pcurve on
 // fuzzed Hermite jets and options (sign, tau, v; NULL options / pieces /
-// count / jets), and cyc_surface_ringed_jet on what was built.
+// count / jets), cyc_surface_ringed_jet on what was built, and the
+// creators from (d, n, rho): cyc_ringed_dnr_create (every field method and
+// unknown ones) and cyc_ringed_pcurve_create (Prop. 3.1).
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -252,6 +254,137 @@ void op_blend(Input& in, Ctx& c) {
   }
 }
 
+// rho = num / den: degrees 0..2 / 0..1 (den NULL mostly), moderate or wild.
+struct Radius {
+  double num[3], den[2];
+  int num_degree = 0, den_degree = 0;
+  bool has_den = false;
+};
+Radius make_radius(Input& in) {
+  Radius r;
+  r.num_degree = in.range(0, 2);
+  in.fill(r.num, 3, in.rarely() ? 0 : 1);
+  r.has_den = in.rarely();
+  r.den_degree = in.range(0, 1);
+  in.fill(r.den, 2, 1);
+  return r;
+}
+
+bool finite_n(const double* x, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+// On OK: kind, finite and deterministic points (second handle `again`).
+void check_ringed_ok(Ctx& c, cyc_surface* out, cyc_surface* again, const char* fn) {
+  int kind = 0;
+  c.check("cyc_surface_kind", cyc_surface_kind(c.ctx, out, &kind));
+  FZ_CHECK(kind == CYC_SURFACE_RINGED, "%s: kind %d", fn, kind);
+  check_points(c, out, again, fn);
+}
+
+// cyc_ringed_dnr_create (methods AUTO, PROJECTION, QUADRATIC, SOS, unknown)
+// and cyc_ringed_pcurve_create (Prop. 3.1) on fuzzed d, n, rho, x, phi.
+void op_dnr(Input& in, Ctx& c) {
+  bool le = false, bad = false;
+  cyc_curve* d = make_curve(in, c, le, bad);
+  const bool d_le = le;
+  cyc_curve* n = make_curve(in, c, le, bad);
+  const Radius r = make_radius(in);
+  double u[2] = {-1, 1};
+  if (in.flag()) in.fill(u, 2, in.range(0, 2));
+  cyc_ringed_field_options o;
+  cyc_ringed_field_options_init(&o);
+  const bool null_options = in.rarely();
+  if (!null_options) {
+    o.method = in.range(-1, 4);
+    if (in.flag()) in.fill(o.v, 3, in.flag() ? 0 : 1);
+    o.which = in.rarely() ? in.range(-1, 2) : in.range(0, 1);
+  }
+  const bool null_out = in.rarely();
+  cyc_surface* out = kSentinel;
+  cyc_ringed_field_report rep, rep0;
+  std::memset(&rep, 0x5a, sizeof rep);
+  rep0 = rep;
+  FZ_LOG("cyc_ringed_dnr_create d %p n %p method %d which %d [%a, %a]", (void*)d, (void*)n,
+         null_options ? 0 : o.method, o.which, u[0], u[1]);
+  auto call = [&](cyc_surface** p, cyc_ringed_field_report* R) {
+    return cyc_ringed_dnr_create(c.ctx, d, n, r.num_degree, r.num, r.den_degree,
+                                 r.has_den ? r.den : nullptr, null_options ? nullptr : &o,
+                                 nullptr, u[0], u[1], p, R);
+  };
+  const int s = call(null_out ? nullptr : &out, &rep);
+  c.check("cyc_ringed_dnr_create", s);
+  const bool rho_bad = !finite_n(r.num, r.num_degree + 1) ||
+                       (r.has_den && !finite_n(r.den, r.den_degree + 1));
+  if (!d || !n || null_out)
+    FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "cyc_ringed_dnr_create: NULL gives %s",
+             cyc_status_name(s));
+  else if (rho_bad)
+    FZ_CHECK(s == CYC_E_NOT_FINITE,
+             "cyc_ringed_dnr_create: non-finite rho gives %s", cyc_status_name(s));
+  else if (!null_options && (o.method < 0 || o.method > 3))
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "cyc_ringed_dnr_create: method %d gives %s", o.method,
+             cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(out == kSentinel && std::memcmp(&rep, &rep0, sizeof rep) == 0,
+             "cyc_ringed_dnr_create: outputs written on error");
+  } else {
+    FZ_CHECK(!d_le, "cyc_ringed_dnr_create: OK for a line element d");
+    FZ_CHECK(rep.method >= 1 && rep.method <= 3, "report method %d", rep.method);
+    if (!null_options && o.method != CYC_RINGED_FIELD_AUTO)
+      FZ_CHECK(rep.method == o.method, "report method %d for %d", rep.method, o.method);
+    if (rep.method == CYC_RINGED_FIELD_SOS)
+      FZ_CHECK(rep.sos_residual <= 1e-8 && rep.sos_margin > 1e-8 && rep.sos_margin <= 4,
+               "SOS report residual %g margin %g", rep.sos_residual, rep.sos_margin);
+    else
+      FZ_CHECK(std::abs(fz::norm3(rep.v) - 1) <= 1e-12, "report v not unit");
+    cyc_surface* again = nullptr;
+    cyc_ringed_field_report rep2;
+    const int s2 = call(&again, &rep2);
+    c.check("cyc_ringed_dnr_create", s2);
+    // Field by field: the struct has padding.
+    FZ_CHECK(s2 == CYC_OK && rep.method == rep2.method && rep.directions == rep2.directions &&
+                 std::memcmp(rep.v, rep2.v, sizeof rep.v) == 0 &&
+                 std::memcmp(&rep.sos_residual, &rep2.sos_residual, sizeof(double)) == 0 &&
+                 std::memcmp(&rep.sos_margin, &rep2.sos_margin, sizeof(double)) == 0,
+             "second call differs");
+    check_ringed_ok(c, out, again, "cyc_ringed_dnr_create");
+    cyc_surface_destroy(c.ctx, out);
+    cyc_surface_destroy(c.ctx, again);
+  }
+  // Prop. 3.1: x of degree 0..3 (rows of 4; rarely -1..9: the buffer holds
+  // ten rows, the first four fuzzed), phi moderate or wild.
+  double x[40] = {};
+  const int xdeg = in.rarely() ? in.range(-1, 9) : in.range(0, 3);
+  in.fill(x, 16, in.rarely() ? 0 : 1);
+  const double phi = in.flag() ? in.moderate() : in.wild();
+  out = kSentinel;
+  FZ_LOG("cyc_ringed_pcurve_create d %p x_degree %d phi %a", (void*)d, xdeg, phi);
+  const int sp = cyc_ringed_pcurve_create(c.ctx, d, xdeg, x, phi, r.num_degree, r.num,
+                                          r.den_degree, r.has_den ? r.den : nullptr, nullptr,
+                                          u[0], u[1], &out);
+  c.check("cyc_ringed_pcurve_create", sp);
+  if (!d)
+    FZ_CHECK(sp == CYC_E_NULL_ARGUMENT, "cyc_ringed_pcurve_create: NULL gives %s",
+             cyc_status_name(sp));
+  else if (xdeg < 0)
+    FZ_CHECK(sp == CYC_E_INVALID_ARGUMENT, "x_degree %d gives %s", xdeg, cyc_status_name(sp));
+  else if (xdeg > CYC_MAX_CURVE_DEGREE / 2)
+    FZ_CHECK(sp == CYC_E_DEGREE_TOO_HIGH || sp == CYC_E_NOT_FINITE ||
+                 sp == CYC_E_INVALID_ARGUMENT,
+             "x_degree %d gives %s", xdeg, cyc_status_name(sp));
+  if (sp != CYC_OK) {
+    FZ_CHECK(out == kSentinel, "cyc_ringed_pcurve_create: *out written on error");
+  } else {
+    check_ringed_ok(c, out, nullptr, "cyc_ringed_pcurve_create");
+    cyc_surface_destroy(c.ctx, out);
+  }
+  cyc_curve_destroy(c.ctx, d);
+  cyc_curve_destroy(c.ctx, n);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -265,8 +398,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   const int nops = in.range(1, 8);
   for (int i = 0; i < nops; ++i) {
-    if (in.flag())
+    // One byte: odd = blend (the old flag), 2 mod 8 = the (d, n, rho)
+    // creators, other even values = create (old seeds keep their meaning).
+    const int op = in.range(0, 255);
+    if (op % 2 == 1)
       op_blend(in, c);
+    else if (op % 8 == 2)
+      op_dnr(in, c);
     else
       op_create(in, c);
   }

@@ -1970,6 +1970,40 @@ class RingedEncoder(Encoder):
         if nulls:
             self.range(1, 4, nulls)
 
+    def dnr(self, d, n, rho=(1.5, 0.25, 0), rho_degree=1, den=None, domain=None,
+            method=0, v=None, which=0, null_out=False, xdeg=1, x=None, phi=0.25):
+        """op_dnr: cyc_ringed_dnr_create then cyc_ringed_pcurve_create.
+        method None: NULL options; den (degree, (a, b)) or None."""
+        self.range(0, 255, 2)  # op_dnr
+        self.curve(d)
+        self.curve(n)
+        self.range(0, 2, rho_degree)
+        self.rarely(False)
+        self.fill(rho, 1)
+        self.rarely(den is not None)
+        self.range(0, 1, den[0] if den else 0)
+        self.fill(den[1] if den else (1, 0), 1)
+        self.flag(domain is not None)
+        if domain is not None:
+            self.range(0, 2, 1)
+            self.fill(domain, 1)
+        self.rarely(method is None)
+        if method is not None:
+            self.range(-1, 4, method)
+            self.flag(v is not None)
+            if v is not None:
+                self.flag(False)
+                self.fill(v, 1)
+            self.rarely(False)
+            self.range(0, 1, which)
+        self.rarely(null_out)
+        self.rarely(False)
+        self.range(0, 3, xdeg)
+        self.rarely(False)
+        self.fill(((list(x) if x else [1, 0, 0.5, 0, 0, 1, 0, -1]) + [0] * 16)[:16], 1)
+        self.flag(True)
+        self.moderate(phi)
+
 
 def ringed_seeds():
     ex41_a = {"d": (-4, -3, 1), "dd": (2, 4, 3), "n": (1, 1, 1), "dn": (0, 1, 1),
@@ -1994,6 +2028,25 @@ def ringed_seeds():
     ], handler=False).data()
     # (d, n, c): a cylinder (d = line, n = point, c = line), a cubic
     # directrix, a line element and a NULL curve.
+    # (d, n, rho) of seed 001 §3: Example 3.3's quadratic n (AUTO, QUADRATIC
+    # with both solutions), the SOS route on a cubic n, projection along a
+    # given v (and a failing one), a horizontal n, an unknown method, NULL
+    # options, with Prop. 3.1 P-curves after each.
+    d1 = ("poly", 1, (0, 0, 0, 1, 2, -1))
+    nq = ("poly", 2, (0.5, -1, 3, 0, 2, 1, 1, 0, 0))
+    ncub = ("poly", 3, (1, -2, 0.5, 0, 1, 3, 2, 0, -1, 0.5, 1, 0.25))
+    nlin = ("poly", 1, (1, 0, 0, 0, 1, 1))
+    nhor = ("poly", 2, (1, 0, 0, 0, 1, 0, 1, 1, 0))
+    seeds["seed-dnr"] = RingedEncoder([
+        lambda e: e.dnr(d1, nq, domain=(-1, 2)),
+        lambda e: e.dnr(d1, nq, method=2, which=1),
+        lambda e: e.dnr(d1, ncub, method=3, x=(1, 0, 0, 0, 0, 1, 1, 0), phi=1.5),
+        lambda e: e.dnr(d1, nlin, method=1, v=(0, 1, 1), xdeg=0, x=(1, 2, 3, 4)),
+        lambda e: e.dnr(d1, nlin, method=1, v=(0, 0, 1)),
+        lambda e: e.dnr(d1, nhor, method=3, den=(1, (2, 1))),
+        lambda e: e.dnr(("point", (1, 2, 3)), ncub, method=4),
+        lambda e: e.dnr(d1, ncub, method=None, rho_degree=0, rho=(2, 0, 0)),
+    ]).data()
     seeds["seed-create"] = RingedEncoder([
         lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("point", (0, 0, 1)),
                            ("poly", 1, (1, 0, 0, 0, 0, 1))),

@@ -501,3 +501,33 @@ TEST(RingedBlendPCurve, RegressionNearlyParallelEndIsConditioned) {
   EXPECT_LT(std::abs(Kb.drho - b.drho), 1e-11 * kappa * kappa * scale);
   EXPECT_LT((Kb.n - b.n).norm(), 1e-10 * scale);
 }
+
+// fuzz_ringed regress-tau-near-one: a P-biarc at tau = 1 - 2^-52. The
+// coefficients (47) of the second piece grow like 1/(1 - tau); in powers of
+// t they cancelled near t = 1 and the end's d was missed by 14. Each piece
+// is now built in powers of the distance from its outer end: the end jets
+// and the join hold to ~1e-11 for tau from 1e-12 to 1 - 1e-12.
+TEST(RingedBlendPCurve, RegressionTauNearOneKeepsTheEnds) {
+  const RingedJet J[2] = {example41_start(), example41_end()};
+  for (double tau : {1 - std::ldexp(1.0, -52), 1 - 1e-12, 1 - 1e-6, 0.5, 1e-6, 1e-12}) {
+    RingedBlendOptions o;
+    o.tau = tau;
+    Surface P[2];
+    int count = 0;
+    ASSERT_EQ(make_ringed_pcurve_blend(J[0], J[1], o, P, count), Status::ok) << tau;
+    ASSERT_EQ(count, 2);
+    for (int e = 0; e < 2; ++e) {
+      RingedJet K;
+      ASSERT_EQ(ringed_jet(P[e], double(e), K), Status::ok);
+      EXPECT_LT((K.d - J[e].d).norm(), 1e-10) << "tau " << tau << " end " << e;
+      EXPECT_LT((K.dd - J[e].dd).norm(), 1e-10) << "tau " << tau << " end " << e;
+      EXPECT_LT((K.n - J[e].n).norm(), 1e-10) << "tau " << tau << " end " << e;
+      EXPECT_LT((K.dn - J[e].dn).norm(), 1e-10) << "tau " << tau << " end " << e;
+      EXPECT_LT(std::abs(K.rho - J[e].rho), 1e-10) << "tau " << tau << " end " << e;
+    }
+    RingedJet L, R;
+    ASSERT_EQ(ringed_jet(P[0], tau, L), Status::ok);
+    ASSERT_EQ(ringed_jet(P[1], tau, R), Status::ok);
+    EXPECT_LT((L.d - R.d).norm() + (L.n - R.n).norm() + std::abs(L.rho - R.rho), 1e-10) << tau;
+  }
+}

@@ -45,6 +45,14 @@ Outcome radius_from(const char* fn, int num_degree, const double* num, int den_d
   return ok();
 }
 
+// rho and the circle parameter f (NULL: m untouched) of the creators.
+Outcome radius_and_circle(const char* fn, int num_degree, const double* num, int den_degree,
+                          const double* den, const cyc_mobius* f, CurvePoly& rn, CurvePoly& rd,
+                          Mobius& m) {
+  if (Outcome o = radius_from(fn, num_degree, num, den_degree, den, rn, rd); o.status) return o;
+  return mobius_from(fn, f, m);
+}
+
 // The message of a failed ringed creation.
 Outcome ringed_failure(const char* fn, Status s, double bad_u) {
   if (s == Status::not_pythagorean)
@@ -80,11 +88,11 @@ int cyc_ringed_dnr_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve*
     REQUIRE(n);
     REQUIRE(out);
     CurvePoly rn, rd;
-    if (Outcome o = radius_from(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, rn, rd);
+    Mobius m;
+    if (Outcome o = radius_and_circle(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, f,
+                                      rn, rd, m);
         o.status)
       return o;
-    Mobius m;
-    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
     RingedFieldOptions o;
     if (options) {
       if (options->method < 0 || options->method > 3)
@@ -127,11 +135,11 @@ int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x_degree,
     if (x_degree > kMaxCurveDegree)
       return fail(CYC_E_DEGREE_TOO_HIGH, "%s: x_degree above %d", fn, kMaxCurveDegree);
     CurvePoly rn, rd;
-    if (Outcome o = radius_from(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, rn, rd);
+    Mobius m;
+    if (Outcome o = radius_and_circle(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, f,
+                                      rn, rd, m);
         o.status)
       return o;
-    Mobius m;
-    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
     CurvePoly q[4];
     for (int i = 0; i < 4; ++i) {
       double c[kMaxCurveDegree + 1];

@@ -1,10 +1,16 @@
 #include "cyclide/pcurve.hpp"
 
+#include "power_form.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace cyclide {
 inline namespace v0 {
+
+using detail::finite;
+using detail::max_abs;
+using detail::power_form;
 
 namespace {
 
@@ -18,32 +24,6 @@ struct Ring {
   }
   CurvePoly sq(const CurvePoly& a) { return mul(a, a); }
 };
-
-double max_abs(const CurvePoly& p) {
-  double m = 0;
-  for (int k = 0; k <= p.deg; ++k) m = std::max(m, std::abs(p.c[k]));
-  return m;
-}
-
-bool finite(const CurvePoly& p) {
-  for (int k = 0; k <= p.deg; ++k)
-    if (!std::isfinite(p.c[k])) return false;
-  return true;
-}
-
-// The homogeneous power-form polynomials (x, y, z, w) of a curve
-// (Bernstein curves converted on their interval).
-void power_form(const RationalCurve& c, CurvePoly (&P)[3], CurvePoly& w) {
-  const CurvePoly* src[4] = {&c.x, &c.y, &c.z, &c.w};
-  CurvePoly* dst[4] = {&P[0], &P[1], &P[2], &w};
-  for (int i = 0; i < 4; ++i) {
-    if (c.bernstein)
-      from_bernstein(src[i]->c, c.degree(), c.u0, c.u0 + c.h, *dst[i]);
-    else
-      *dst[i] = *src[i];
-    dst[i]->trim();
-  }
-}
 
 }  // namespace
 
@@ -327,6 +307,47 @@ void rotate_back(const Eigen::Matrix3d& M, const CurvePoly (&P)[3], CurvePoly (&
     out[j] = P[0].scaled(M(0, j)) + P[1].scaled(M(1, j)) + P[2].scaled(M(2, j));
 }
 
+// p(t0 + h s) as a polynomial in s (Horner on the linear t0 + h s).
+CurvePoly shifted(const CurvePoly& p, double t0, double h) {
+  const CurvePoly lin = CurvePoly::linear(t0, h);
+  CurvePoly q(p.c[p.deg]), r;
+  for (int k = p.deg - 1; k >= 0; --k) {
+    multiply(q, lin, r);  // degree <= p.deg: fits
+    r.c[0] += p.c[k];
+    q = r;
+  }
+  return q;
+}
+
+// The planar P-curve w in r = 1 - t: its Bernstein coefficients reversed.
+PlanarPCurve reversed(const PlanarPCurve& P) {
+  PlanarPCurve R;
+  R.n = P.n;
+  for (int i = 0; i <= P.n; ++i) R.w[i] = P.w[P.n - i];
+  return R;
+}
+
+// The curve c (power form in r) as a Bernstein curve in r = 1 - t: on
+// [u0, u0 + h] = [1, 0] of the global t.
+RationalCurve bernstein_in_r(const RationalCurve& c) {
+  const int n = c.degree();
+  RationalCurve B;
+  const CurvePoly* src[4] = {&c.x, &c.y, &c.z, &c.w};
+  CurvePoly* dst[4] = {&B.x, &B.y, &B.z, &B.w};
+  for (int i = 0; i < 4; ++i) {
+    CurvePoly p = *src[i];
+    p.deg = n;  // common formal degree (the coefficients above are zero)
+    double b[kMaxCurveDegree + 1];
+    to_bernstein(p, 0.0, 1.0, b);
+    dst[i]->assign(b, n);
+  }
+  B.bernstein = true;
+  B.u0 = 1.0;
+  B.h = -1.0;
+  B.update_constant_weight();
+  return B;
+}
+
 Status polynomial_curve(const CurvePoly (&P)[3], RationalCurve& out) {
   int deg = 0;
   for (const CurvePoly& p : P) deg = std::max(deg, p.deg);
@@ -397,24 +418,40 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
   const double knots[3] = {0.0, m == 1 ? 1.0 : options.tau, 1.0};
   Surface out[2];
   for (int k = 0; k < m; ++k) {
+    // The coefficients (47) of the P-biarc grow like 1/tau in the piece
+    // [0, tau] and like 1/(1 - tau) in [tau, 1], where they multiply t^2
+    // and (1 - t)^2: each piece is well conditioned in powers of the
+    // distance from its outer end. So the second piece is built in r = 1 - t
+    // (its Bernstein control points reversed) and handed over as a
+    // Bernstein curve in r on [1, 0] (h = -1); in powers of t it missed its
+    // end's d by 14 at tau = 1 - 2e-16 (fuzz_ringed regress-tau-near-one).
+    const double t0 = knots[k], t1 = knots[k + 1];
+    const bool mirrored = k == 1;
+    CurvePoly Dl[3], n3l = mirrored ? shifted(n3, 1, -1) : n3,
+                     rhol = mirrored ? shifted(rho, 1, -1) : rho;
+    for (int j = 0; j < 3; ++j) Dl[j] = mirrored ? shifted(D[j], 1, -1) : D[j];
     // n = (x1, x2, n3); f = n x e3 / sigma = (x2, -x1, 0) / sigma (15);
     // c = d + rho f (4); everything rotated back to world coordinates.
     CurvePoly x1, x2, sigma;
-    planar_pcurve_polys(P[k], x1, x2, sigma);
-    const CurvePoly nl[3] = {x1, x2, n3};
+    planar_pcurve_polys(mirrored ? reversed(P[k]) : P[k], x1, x2, sigma);
+    const CurvePoly nl[3] = {x1, x2, n3l};
     RationalField f;
     const CurvePoly fl[3] = {x2, -x1, CurvePoly()};
     CurvePoly Dw[3], Nw[3];
-    rotate_back(M, D, Dw);
+    rotate_back(M, Dl, Dw);
     rotate_back(M, nl, Nw);
     rotate_back(M, fl, f.F);
     f.w = sigma;
     RationalCurve dc, nc, cc;
     if (Status st = polynomial_curve(Dw, dc); st != Status::ok) return st;
     if (Status st = polynomial_curve(Nw, nc); st != Status::ok) return st;
-    if (Status st = ringed_curve(dc, rho, CurvePoly(1.0), f, cc); st != Status::ok) return st;
-    if (Status st = make_ringed(dc, nc, cc, nullptr, knots[k], knots[k + 1], out[k], bad_u);
-        st != Status::ok)
+    if (Status st = ringed_curve(dc, rhol, CurvePoly(1.0), f, cc); st != Status::ok) return st;
+    if (mirrored) {
+      dc = bernstein_in_r(dc);
+      nc = bernstein_in_r(nc);
+      cc = bernstein_in_r(cc);
+    }
+    if (Status st = make_ringed(dc, nc, cc, nullptr, t0, t1, out[k], bad_u); st != Status::ok)
       return st;
   }
   for (int k = 0; k < m; ++k) pieces[k] = out[k];

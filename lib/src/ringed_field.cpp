@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "cyclide/pcurve.hpp"
+#include "power_form.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -18,31 +19,14 @@ using Companion = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxS
                                 kMaxSosDegree>;
 using CPoly = Complex[kMaxCurveDegree + 1];
 
-double max_abs(const CurvePoly& p) {
-  double m = 0;
-  for (int k = 0; k <= p.deg; ++k) m = std::max(m, std::abs(p.c[k]));
-  return m;
-}
+using detail::finite;
+using detail::max_abs;
 
-bool finite(const CurvePoly& p) {
-  for (int k = 0; k <= p.deg; ++k)
-    if (!std::isfinite(p.c[k])) return false;
-  return true;
-}
-
-// The numerator N of n in power form (Bernstein curves converted), trimmed;
-// false for a point or line element.
+// The numerator N of n in power form, trimmed; false for a point or line
+// element.
 bool numerator(const RationalCurve& n, CurvePoly (&N)[3], CurvePoly& w) {
   if (n.kind != CurveKind::rational) return false;
-  const CurvePoly* src[4] = {&n.x, &n.y, &n.z, &n.w};
-  CurvePoly* dst[4] = {&N[0], &N[1], &N[2], &w};
-  for (int i = 0; i < 4; ++i) {
-    if (n.bernstein)
-      from_bernstein(src[i]->c, n.degree(), n.u0, n.u0 + n.h, *dst[i]);
-    else
-      *dst[i] = *src[i];
-    dst[i]->trim();
-  }
+  detail::power_form(n, N, w);
   return true;
 }
 
