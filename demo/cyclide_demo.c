@@ -592,6 +592,66 @@ static void pcurve_demos(cyc_context* ctx, const char* dir, FILE* report) {
   }
 }
 
+/* Seed 001 §3 and §7: ringed surfaces (d, n, rho) made rational by
+ * Example 3.3 (quadratic n: a projection direction found) and by the
+ * numerical SOS route (20)-(23) (cubic n), and the rational contour curves
+ * (72) of the normal ringed surface of a planar PH cubic (Corollary 7.3). */
+static void ringed_dnr_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  const double dc[6] = {0, 0, 0, 1, 2, -1};
+  const double nq[9] = {0.5, -1, 3, 0, 2, 1, 1, 0, 0};
+  const double ncub[12] = {1, -2, 0.5, 0, 1, 3, 2, 0, -1, 0.5, 1, 0.25};
+  const double rho[2] = {1.5, 0.25};
+  const double pd[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, -1.0 / 3, 0, 0};
+  const double pn[9] = {1, 0, 0, 0, 2, 0, -1, 0, 0}, half[1] = {0.5}, e3[3] = {0, 0, 1};
+  cyc_curve *d, *n2, *n3, *phd, *phn, *cv[2];
+  cyc_surface* S;
+  cyc_ringed_field_options o;
+  cyc_ringed_field_report rep;
+  double pts[12];
+  int count = 0, whole = 0;
+  fprintf(report, "\nRinged surfaces (d, n, rho) from their functions (seed 001 sec. 3, 7)\n");
+  check(ctx, cyc_curve_create_polynomial(ctx, 1, dc, 3, &d), "d");
+  check(ctx, cyc_curve_create_polynomial(ctx, 2, nq, 3, &n2), "n");
+  check(ctx, cyc_curve_create_polynomial(ctx, 3, ncub, 3, &n3), "n");
+  cyc_ringed_field_options_init(&o);
+  check(ctx, cyc_ringed_dnr_create(ctx, d, n2, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+        "cyc_ringed_dnr_create");
+  fprintf(report, "  Example 3.3, n = (1,0,0)t^2 + (0,2,1)t + (0.5,-1,3): %d directions v with "
+                  "|n x v| polynomial; used v = (%.6f, %.6f, %.6f) (rational; exact up to the rounding of v)\n",
+          rep.directions, rep.v[0], rep.v[1], rep.v[2]);
+  write_surface(ctx, S, dir, "ringed_ex33_quadratic_n", NULL, report);
+  cyc_surface_destroy(ctx, S);
+  o.method = CYC_RINGED_FIELD_SOS;
+  check(ctx, cyc_ringed_dnr_create(ctx, d, n3, 1, rho, 0, NULL, &o, NULL, -1, 2, &S, &rep),
+        "cyc_ringed_dnr_create");
+  fprintf(report, "  eqs. (20)-(23), cubic n: numerical SOS |n|^2 = g1^2 + g2^2 to %.1e "
+                  "(relative), denominator margin %.3f\n", rep.sos_residual, rep.sos_margin);
+  write_surface(ctx, S, dir, "ringed_sos_cubic_n", NULL, report);
+  cyc_surface_destroy(ctx, S);
+  check(ctx, cyc_curve_create_polynomial(ctx, 3, pd, 3, &phd), "d");
+  check(ctx, cyc_curve_create_polynomial(ctx, 2, pn, 3, &phn), "n");
+  o.method = CYC_RINGED_FIELD_PROJECTION;
+  check(ctx, cyc_ringed_dnr_create(ctx, phd, phn, 0, half, 0, NULL, &o, NULL, -1.5, 1.5, &S, &rep),
+        "cyc_ringed_dnr_create");
+  check(ctx, cyc_ringed_contour_curves(ctx, phd, phn, 0, half, 0, NULL, e3, &cv[0], &cv[1]),
+        "cyc_ringed_contour_curves");
+  check(ctx, cyc_surface_contour_points(ctx, S, 0.5, e3, pts, 12, &count, &whole),
+        "cyc_surface_contour_points");
+  fprintf(report, "  Corollary 7.3, d = (t - t^3/3, t^2, 0), n = d', rho = 1/2: rational contour "
+                  "curves (72) for v = e3; at t = 1/2 the quartic of Definition 7.1 gives %d "
+                  "points\n", count);
+  write_surface(ctx, S, dir, "ringed_ph_pipe", NULL, report);
+  write_curves(ctx, S, cv, 2, dir, "ringed_ph_pipe_contour", report);
+  cyc_curve_destroy(ctx, cv[0]);
+  cyc_curve_destroy(ctx, cv[1]);
+  cyc_surface_destroy(ctx, S);
+  cyc_curve_destroy(ctx, d);
+  cyc_curve_destroy(ctx, n2);
+  cyc_curve_destroy(ctx, n3);
+  cyc_curve_destroy(ctx, phd);
+  cyc_curve_destroy(ctx, phn);
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -683,6 +743,7 @@ int main(int argc, char** argv) {
   darboux_demos(ctx, dir, report);
   blend_demos(ctx, dir, report);
   pcurve_demos(ctx, dir, report);
+  ringed_dnr_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

@@ -4,7 +4,8 @@
 // fuzzed Hermite jets and options (sign, tau, v; NULL options / pieces /
 // count / jets), cyc_surface_ringed_jet on what was built, and the
 // creators from (d, n, rho): cyc_ringed_dnr_create (every field method and
-// unknown ones) and cyc_ringed_pcurve_create (Prop. 3.1).
+// unknown ones) and cyc_ringed_pcurve_create (Prop. 3.1), and the contour
+// points (Definition 7.1) of every surface built.
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -90,6 +91,38 @@ void check_points(Ctx& c, const cyc_surface* A, const cyc_surface* B, const char
   }
 }
 
+// Contour points (Definition 7.1) at the middle of the domain for three
+// fixed directions (no input consumed: older seeds keep their meaning):
+// documented statuses, nothing written on error, at most 4 finite points
+// on OK, identical bits for a second call.
+void check_contour(Ctx& c, const cyc_surface* S) {
+  double u0 = 0, u1 = 0;
+  c.check("cyc_surface_domain", cyc_surface_domain(c.ctx, S, &u0, &u1));
+  const double u = u0 + (u1 - u0) * 0.375;
+  const double dirs[3][3] = {{1, 0, 0}, {0, 0, 1}, {1, -2, 0.5}};
+  for (const auto& v : dirs) {
+    double P[12], Q[12];
+    fz::fill_sentinel(P, 12);
+    int count = -3, whole = -3, count2 = -3, whole2 = -3;
+    const int s = cyc_surface_contour_points(c.ctx, S, u, v, P, 12, &count, &whole);
+    c.check("cyc_surface_contour_points", s);
+    if (s != CYC_OK) {
+      FZ_CHECK(count == -3 && whole == -3 && fz::all_sentinel(P, 12),
+               "contour points: outputs written on error");
+      continue;
+    }
+    FZ_CHECK(count >= 0 && count <= 4 && (whole == 0 || (whole == 1 && count == 0)),
+             "contour points: count %d whole %d", count, whole);
+    for (int k = 0; k < count; ++k)
+      FZ_CHECK(fz::finite3(P + 3 * k), "contour point %d not finite", k);
+    const int s2 = cyc_surface_contour_points(c.ctx, S, u, v, Q, 12, &count2, &whole2);
+    c.check("cyc_surface_contour_points", s2);
+    FZ_CHECK(s2 == CYC_OK && count2 == count && whole2 == whole &&
+                 std::memcmp(P, Q, sizeof(double) * 3 * count) == 0,
+             "contour points not deterministic");
+  }
+}
+
 void op_create(Input& in, Ctx& c) {
   bool le = false, bad = false;
   cyc_curve* d = make_curve(in, c, le, bad);
@@ -120,6 +153,7 @@ void op_create(Input& in, Ctx& c) {
     c.check("cyc_surface_kind", cyc_surface_kind(c.ctx, out, &kind));
     FZ_CHECK(kind == CYC_SURFACE_RINGED, "cyc_ringed_create: kind %d", kind);
     check_points(c, out, nullptr, "cyc_ringed_create");
+    check_contour(c, out);
     cyc_ringed_jet J;
     std::memset(&J, 0x5a, sizeof J);
     const cyc_ringed_jet J0 = J;
@@ -282,6 +316,7 @@ void check_ringed_ok(Ctx& c, cyc_surface* out, cyc_surface* again, const char* f
   c.check("cyc_surface_kind", cyc_surface_kind(c.ctx, out, &kind));
   FZ_CHECK(kind == CYC_SURFACE_RINGED, "%s: kind %d", fn, kind);
   check_points(c, out, again, fn);
+  check_contour(c, out);
 }
 
 // cyc_ringed_dnr_create (methods AUTO, PROJECTION, QUADRATIC, SOS, unknown)

@@ -2437,6 +2437,38 @@ static void test_ringed_dnr(cyc_context* ctx) {
   CHECK_STATUS(ctx, cyc_ringed_pcurve_create(ctx, d, 1, xq, NAN, 1, rho, 0, NULL, NULL, -1, 2, &S),
                CYC_E_NOT_FINITE);
   CHECK(S == SURF_SENT);
+  {
+    /* Eq. (72): the normal ringed surface of the planar PH cubic
+     * d = (t - t^3/3, t^2, 0), n = d' = (1 - t^2, 2t, 0), |n| = 1 + t^2,
+     * rho = 1/2, v = e3: c+- = d +- (n x e3)/(2 |n|). */
+    const double pd[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, -1.0 / 3, 0, 0};
+    const double pn[9] = {1, 0, 0, 0, 2, 0, -1, 0, 0}, half[1] = {0.5};
+    const double e3[3] = {0, 0, 1}, e1[3] = {1, 0, 0};
+    cyc_curve *pdc = NULL, *pnc = NULL, *cp = CURVE_SENT, *cm = CURVE_SENT;
+    double p[3];
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 3, pd, 3, &pdc), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, pn, 3, &pnc), CYC_OK);
+    CHECK_STATUS(ctx, cyc_ringed_contour_curves(ctx, pdc, pnc, 0, half, 0, NULL, e1, &cp, &cm),
+                 CYC_E_INVALID_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_ringed_contour_curves(ctx, pdc, nquad, 0, half, 0, NULL, e3, &cp, &cm),
+                 CYC_E_INVALID_ARGUMENT);
+    CHECK_STATUS(ctx, cyc_ringed_contour_curves(ctx, pdc, pnc, 0, half, 0, NULL, e3, NULL, &cm),
+                 CYC_E_NULL_ARGUMENT);
+    CHECK(cp == CURVE_SENT && cm == CURVE_SENT);
+    CHECK_STATUS(ctx, cyc_ringed_contour_curves(ctx, pdc, pnc, 0, half, 0, NULL, e3, &cp, &cm),
+                 CYC_OK);
+    if (cp != CURVE_SENT && cm != CURVE_SENT) {
+      /* t = 1: d = (2/3, 1, 0), n = (0, 2, 0), n x e3 = (2, 0, 0), |n| = 2. */
+      CHECK_STATUS(ctx, cyc_curve_eval(ctx, cp, 1.0, 0, p, 3), CYC_OK);
+      CHECK(fabs(p[0] - (2.0 / 3 + 0.5)) < 1e-14 && fabs(p[1] - 1) < 1e-14 && fabs(p[2]) < 1e-14);
+      CHECK_STATUS(ctx, cyc_curve_eval(ctx, cm, 1.0, 0, p, 3), CYC_OK);
+      CHECK(fabs(p[0] - (2.0 / 3 - 0.5)) < 1e-14 && fabs(p[1] - 1) < 1e-14);
+      cyc_curve_destroy(ctx, cp);
+      cyc_curve_destroy(ctx, cm);
+    }
+    cyc_curve_destroy(ctx, pdc);
+    cyc_curve_destroy(ctx, pnc);
+  }
   cyc_curve_destroy(ctx, d);
   cyc_curve_destroy(ctx, nquad);
   cyc_curve_destroy(ctx, ncubic);
@@ -2450,7 +2482,7 @@ static void test_ringed(cyc_context* ctx) {
   cyc_ringed_jet a, b, j;
   cyc_pcurve_blend_options o;
   double x[3];
-  int kind = 0, count = -1;
+  int kind = 0, count = -1, k;
   CHECK_STATUS(ctx, cyc_curve_create_line(ctx, O, Z, &d), CYC_OK);
   CHECK_STATUS(ctx, cyc_curve_create_point(ctx, Z, &n), CYC_OK);
   CHECK_STATUS(ctx, cyc_curve_create_line(ctx, X1, Z, &c), CYC_OK);
@@ -2468,6 +2500,29 @@ static void test_ringed(cyc_context* ctx) {
     CHECK(fabs(hypot(x[0], x[1]) - 1) < 1e-14 && fabs(x[2] - 0.5) < 1e-14);
     CHECK_STATUS(ctx, cyc_surface_ringed_jet(ctx, S, 0.5, &j), CYC_OK);
     CHECK(fabs(j.rho - 1) < 1e-14 && fabs(j.d[2] - 0.5) < 1e-14 && fabs(j.dd[2] - 1) < 1e-14);
+    {
+      /* Contour points of the cylinder of radius 1 about z (Definition 7.1):
+       * for v = e1 the points (0, +-1, u); for v = e3 the whole circle. */
+      double pts[12];
+      int cnt = -1, whole = -1;
+      const double ve1[3] = {3, 0, 0}, ve3[3] = {0, 0, 1}, vz[3] = {0, 0, 0};
+      for (k = 0; k < 12; ++k) pts[k] = 7;
+      CHECK_STATUS(ctx, cyc_surface_contour_points(ctx, S, 0.5, ve1, pts, 11, &cnt, &whole),
+                   CYC_E_BUFFER_TOO_SMALL);
+      CHECK_STATUS(ctx, cyc_surface_contour_points(ctx, S, 0.5, vz, pts, 12, &cnt, &whole),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK_STATUS(ctx, cyc_surface_contour_points(ctx, S, 0.5, ve1, NULL, 12, &cnt, &whole),
+                   CYC_E_NULL_ARGUMENT);
+      CHECK(cnt == -1 && whole == -1 && pts[0] == 7);
+      CHECK_STATUS(ctx, cyc_surface_contour_points(ctx, S, 0.5, ve1, pts, 12, &cnt, &whole),
+                   CYC_OK);
+      CHECK(cnt == 2 && whole == 0);
+      CHECK(fabs(pts[0]) < 1e-14 && fabs(fabs(pts[1]) - 1) < 1e-14 && fabs(pts[2] - 0.5) < 1e-14);
+      CHECK(fabs(pts[3]) < 1e-14 && fabs(pts[1] + pts[4]) < 1e-14 && fabs(pts[5] - 0.5) < 1e-14);
+      CHECK_STATUS(ctx, cyc_surface_contour_points(ctx, S, 0.5, ve3, pts, 12, &cnt, &whole),
+                   CYC_OK);
+      CHECK(cnt == 0 && whole == 1);
+    }
     cyc_surface_destroy(ctx, S);
   }
   cyc_curve_destroy(ctx, d);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "cyclide/blend.hpp"
+#include "cyclide/contour.hpp"
 #include "cyclide/pcurve.hpp"
 
 using namespace cyclide;
@@ -530,4 +531,81 @@ TEST(RingedBlendPCurve, RegressionTauNearOneKeepsTheEnds) {
     ASSERT_EQ(ringed_jet(P[1], tau, R), Status::ok);
     EXPECT_LT((L.d - R.d).norm() + (L.n - R.n).norm() + std::abs(L.rho - R.rho), 1e-10) << tau;
   }
+}
+
+// Definition 7.1 on a surface of revolution about the z axis (d = (0, 0, u),
+// n = e3, rho = 1 + u^2/4): for v = e1 the contour (the silhouette's
+// generators) is the meridian in the plane x = 0, the points (0, +-rho, u).
+TEST(ContourCurves, SurfaceOfRevolution) {
+  RationalCurve d, n, c;
+  const double dc[6] = {0, 0, 0, 0, 0, 1}, cc[9] = {1, 0, 0, 0, 0, 1, 0.25, 0, 0};
+  ASSERT_EQ(make_polynomial_curve(1, dc, d), Status::ok);
+  ASSERT_EQ(make_point(Vec3d(0, 0, 1), n), Status::ok);
+  ASSERT_EQ(make_polynomial_curve(2, cc, c), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_ringed(d, n, c, nullptr, -1, 1, S), Status::ok);
+  for (double u : {-1.0, -0.3, 0.0, 0.8}) {
+    ContourPoints P;
+    ASSERT_EQ(contour_points(S, u, Vec3d(2, 0, 0), P), Status::ok);
+    ASSERT_EQ(P.count, 2) << u;
+    EXPECT_FALSE(P.whole_circle);
+    const double rho = 1 + u * u / 4;
+    const Vec3d lo(0, -rho, u), hi(0, rho, u);
+    EXPECT_LT(std::min((P.points[0] - lo).norm(), (P.points[0] - hi).norm()), 1e-13);
+    EXPECT_LT(std::min((P.points[1] - lo).norm(), (P.points[1] - hi).norm()), 1e-13);
+    EXPECT_GT((P.points[0] - P.points[1]).norm(), rho);
+    // Along the axis every point of the circle has a normal with a z part
+    // (rho' != 0) except at u = 0, where the surface is a cylinder locally:
+    // there the whole circle is contour for v = e3.
+    ASSERT_EQ(contour_points(S, u, Vec3d(0, 0, 1), P), Status::ok);
+    EXPECT_EQ(P.whole_circle, u == 0.0) << u;
+    EXPECT_EQ(P.count, 0);
+  }
+  ContourPoints P;
+  EXPECT_EQ(contour_points(S, 0.5, Vec3d::Zero(), P), Status::invalid_argument);
+  EXPECT_EQ(contour_points(S, NAN, Vec3d(1, 0, 0), P), Status::not_finite);
+}
+
+// Eqs. (71), (72), Prop. 7.2 and Corollary 7.3: the normal ringed surface
+// (n = d') of the planar PH cubic d = (t - t^3/3, t^2, 0), |d'| = 1 + t^2,
+// with rho = 1/2 has n.e3 = 0 and the rational contour curves
+// c+- = d +- rho (n x e3)/|n|; they agree with the contour points of
+// Definition 7.1 computed on the circles.
+TEST(ContourCurves, Equation72PythagoreanOrientation) {
+  RationalCurve d, n, plus, minus;
+  const double dc[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, -1.0 / 3, 0, 0};
+  const double nc[9] = {1, 0, 0, 0, 2, 0, -1, 0, 0};
+  ASSERT_EQ(make_polynomial_curve(3, dc, d), Status::ok);
+  ASSERT_EQ(make_polynomial_curve(2, nc, n), Status::ok);
+  ASSERT_EQ(contour_curves_71(d, n, poly({0.5}), poly({1.0}), Vec3d(0, 0, 1), plus, minus),
+            Status::ok);
+  RingedFieldOptions o;
+  o.method = RingedFieldMethod::projection;
+  Surface S;
+  ASSERT_EQ(make_ringed_dnr(d, n, poly({0.5}), poly({1.0}), o, nullptr, -1.5, 1.5, S),
+            Status::ok);
+  for (double t : {-1.5, -0.4, 0.0, 0.7, 1.5}) {
+    const Vec3d D = d.point(t), N = n.point(t);
+    const Vec3d side = 0.5 * N.cross(Vec3d(0, 0, 1)) / N.norm();
+    EXPECT_LT((plus.point(t) - (D + side)).norm(), 1e-13) << t;
+    EXPECT_LT((minus.point(t) - (D - side)).norm(), 1e-13) << t;
+    ContourPoints P;
+    ASSERT_EQ(contour_points(S, t, Vec3d(0, 0, 1), P), Status::ok);
+    ASSERT_EQ(P.count, 2) << t;
+    for (int i = 0; i < 2; ++i)
+      EXPECT_LT(std::min((P.points[i] - plus.point(t)).norm(),
+                         (P.points[i] - minus.point(t)).norm()),
+                1e-12)
+          << t;
+  }
+  // (71) fails for v = e1; |n| is not a polynomial for n = (1, t, 0).
+  EXPECT_EQ(contour_curves_71(d, n, poly({0.5}), poly({1.0}), Vec3d(1, 0, 0), plus, minus),
+            Status::invalid_argument);
+  const double lin[6] = {1, 0, 0, 0, 1, 0};
+  RationalCurve m;
+  ASSERT_EQ(make_polynomial_curve(1, lin, m), Status::ok);
+  EXPECT_EQ(contour_curves_71(d, m, poly({0.5}), poly({1.0}), Vec3d(0, 0, 1), plus, minus),
+            Status::not_pythagorean);
+  EXPECT_EQ(contour_curves_71(d, n, poly({0.5}), poly({1.0}), Vec3d::Zero(), plus, minus),
+            Status::invalid_argument);
 }

@@ -21,7 +21,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cyclide/contour.hpp"
 #include "cyclide/pcurve.hpp"
+#include "cyclide/ringed.hpp"
 
 using namespace cyclide;
 
@@ -200,4 +202,47 @@ RC_GTEST_PROP(PCurveProperties, SosFieldIsUnitAndPerpendicular, ()) {
   RC_PRE(n.point(t).norm() > 1e-3);
   RC_PRE(std::abs(f.w(t)) > 1e-9 * (1 + std::abs(f.w(t))));
   RC_ASSERT(unit_perpendicular_error(f, n, t) <= 1e-9);
+}
+
+// Definition 7.1: on random ringed surfaces (d, n, rho) — cubic d,
+// quadratic n made rational by Example 3.3, constant rho — every contour
+// point for a random v lies on its circle and the surface's tangent plane
+// there contains v: the normal t x T, with t the circle tangent and T the
+// central difference of the nearest points on the circles at u +- h, is
+// perpendicular to v to 1e-6 (h = 1e-5: difference error ~h^2, rounding
+// ~1e-16/h).
+RC_GTEST_PROP(PCurveProperties, ContourPointsHaveNormalsPerpendicularToV, ()) {
+  const RationalCurve d = random_poly_curve(3), n = random_poly_curve(2);
+  RingedFieldOptions o;
+  o.method = RingedFieldMethod::quadratic;
+  Surface S;
+  const CurvePoly rho(1.0 + std::abs(dyadic()));
+  RC_PRE(make_ringed_dnr(d, n, rho, CurvePoly(1.0), o, nullptr, -1, 1, S) == Status::ok);
+  const Vec3d v = dyadic3();
+  RC_PRE(v.norm() > 0.25);
+  const double u = *rc::gen::inRange(-8, 9) / 10.0, h = 1e-5;
+  ContourPoints P;
+  RC_ASSERT(contour_points(S, u, v, P) == Status::ok);
+  RC_PRE(!P.whole_circle);
+  RingedData R[3];
+  for (int i = 0; i < 3; ++i) RC_ASSERT(S.ringed(u + (i - 1) * h, R[i]) == Status::ok);
+  const double r = std::sqrt(R[1].rho2);
+  for (int k = 0; k < P.count; ++k) {
+    const Vec3d x = P.points[k], a = R[1].n.normalized();
+    RC_ASSERT(std::abs((x - R[1].c).norm() - r) <= 1e-10 * (1 + r + R[1].c.norm()));
+    RC_ASSERT(std::abs((x - R[1].c).dot(a)) <= 1e-10 * (1 + r + R[1].c.norm()));
+    Vec3d near[2];
+    for (int i = 0; i < 2; ++i) {
+      const RingedData& Q = R[2 * i];
+      const Vec3d b = Q.n.normalized(), p = (x - Q.c) - (x - Q.c).dot(b) * b;
+      near[i] = Q.c + std::sqrt(Q.rho2) * p.normalized();
+    }
+    const Vec3d T = (near[1] - near[0]) / (2 * h), t = a.cross(x - R[1].c);
+    const Vec3d N = t.cross(T);
+    RC_PRE(N.norm() > 1e-3 * t.norm() * T.norm());  // not a singular point
+    // Circles that hardly move (|T| tiny: d' and n' nearly 0) leave the
+    // difference to rounding (~1e-16 |x| / (h |T|)): not judged.
+    RC_PRE(T.norm() > 1e-2 * (1 + r));
+    RC_ASSERT(std::abs(N.normalized().dot(v.normalized())) <= 1e-6);
+  }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "capi_internal.hpp"
+#include "cyclide/contour.hpp"
 #include "cyclide/pcurve.hpp"
 
 using namespace cyclide;
@@ -225,6 +226,67 @@ int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc
       }
     for (int k = 0; k < n; ++k) pieces[k] = h[k];
     *count = n;
+    return ok();
+  });
+}
+
+int cyc_surface_contour_points(cyc_context* ctx, const cyc_surface* surface, double u,
+                               const double v[3], double* points, size_t capacity, int* count,
+                               int* whole_circle) {
+  const char* fn = "cyc_surface_contour_points";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(v);
+    REQUIRE(points);
+    REQUIRE(count);
+    REQUIRE(whole_circle);
+    if (capacity < 12)
+      return fail(CYC_E_BUFFER_TOO_SMALL, "%s: capacity %zu < 12 doubles", fn, capacity);
+    ContourPoints P;
+    if (Status s = contour_points(surface->surface, u, vec(v), P); s != Status::ok) {
+      if (s == Status::invalid_argument) return fail(int(s), "%s: v is zero", fn);
+      return from_core(fn, s);
+    }
+    for (int k = 0; k < P.count; ++k) put3(points + 3 * k, P.points[k]);
+    *count = P.count;
+    *whole_circle = P.whole_circle ? 1 : 0;
+    return ok();
+  });
+}
+
+int cyc_ringed_contour_curves(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                              int rho_num_degree, const double* rho_num, int rho_den_degree,
+                              const double* rho_den, const double v[3], cyc_curve** plus,
+                              cyc_curve** minus) {
+  const char* fn = "cyc_ringed_contour_curves";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(n);
+    REQUIRE(v);
+    REQUIRE(plus);
+    REQUIRE(minus);
+    CurvePoly rn, rd;
+    if (Outcome o = radius_from(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, rn, rd);
+        o.status)
+      return o;
+    RationalCurve P, M;
+    if (Status s = contour_curves_71(d->curve, n->curve, rn, rd, vec(v), P, M); s != Status::ok) {
+      if (s == Status::invalid_argument)
+        return fail(int(s), "%s: n.v is not identically 0 (eq. 71), v = 0, or n is not a curve",
+                    fn);
+      if (s == Status::not_pythagorean)
+        return fail(int(s), "%s: |n| is not a polynomial: no rational contour curve (Prop. 7.2)",
+                    fn);
+      return from_core(fn, s);
+    }
+    cyc_curve* h[2] = {nullptr, nullptr};
+    if (Outcome e = emit(fn, ctx, &h[0], P); e.status) return e;
+    if (Outcome e = emit(fn, ctx, &h[1], M); e.status) {
+      cyc_curve_destroy(ctx, h[0]);
+      return e;
+    }
+    *plus = h[0];
+    *minus = h[1];
     return ok();
   });
 }

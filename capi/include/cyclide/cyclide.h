@@ -712,6 +712,33 @@ CYC_API int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x
                                      const double* rho_den, const cyc_mobius* f, double u0,
                                      double u1, cyc_surface** out);
 
+/** Contour points (seed 001 Definition 7.1: the surface normal is orthogonal
+ *  to v; the silhouette in the projection along v) on the circle at u of
+ *  any surface of the library, v of any nonzero length: up to 4 points,
+ *  ordered by angle on the circle, written as rows of 3 doubles to points
+ *  (capacity counts doubles and must be >= 12), their number to *count;
+ *  *whole_circle = 1 (and *count = 0) when every point of the circle
+ *  qualifies (the definition excludes the sweeping circles). Each point is
+ *  a root of a quartic, exact to rounding (the general contour curve (70)
+ *  has nested square roots). CYC_E_INVALID_ARGUMENT for v = 0,
+ *  CYC_E_BUFFER_TOO_SMALL, CYC_E_SINGULAR_POINT for radius 0, and the
+ *  statuses of cyc_surface_ringed_data at u. All or nothing. */
+CYC_API int cyc_surface_contour_points(cyc_context* ctx, const cyc_surface* surface, double u,
+                                       const double v[3], double* points, size_t capacity,
+                                       int* count, int* whole_circle);
+
+/** Eqs. (71), (72), Prop. 7.2: for a ringed surface (d, n, rho) with
+ *  polynomial n, n.v = 0 identically and |n| a polynomial (n a P-curve),
+ *  the two rational contour curves c+- = d +- rho (n x v)/|n| (rho as in
+ *  cyc_ringed_dnr_create). CYC_E_INVALID_ARGUMENT if n.v is not 0 (relative
+ *  1e-12 of n's coefficients) or v = 0, CYC_E_NOT_PYTHAGOREAN if |n| is not a
+ *  polynomial (then no rational contour curve exists). Writes both handles
+ *  or neither. */
+CYC_API int cyc_ringed_contour_curves(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                                      int rho_num_degree, const double* rho_num,
+                                      int rho_den_degree, const double* rho_den,
+                                      const double v[3], cyc_curve** plus, cyc_curve** minus);
+
 /** Continuity of the join of surface a at u = ua and surface b at u = ub
  *  along a common circle, at the points x_a(ua, va[i]) and their closest
  *  points on b's circle. lambda = du_a/du_b. All jumps compare b's
