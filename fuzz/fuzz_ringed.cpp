@@ -5,7 +5,8 @@
 // count / jets), cyc_surface_ringed_jet on what was built, and the
 // creators from (d, n, rho): cyc_ringed_dnr_create (every field method and
 // unknown ones) and cyc_ringed_pcurve_create (Prop. 3.1), and the contour
-// points (Definition 7.1) of every surface built.
+// points (Definition 7.1) of every surface built, and the bumped blend of
+// §5 with its clearance (54) and deviance (58).
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -420,6 +421,61 @@ void op_dnr(Input& in, Ctx& c) {
   cyc_curve_destroy(c.ctx, n);
 }
 
+// cyc_blend_ringed_pcurve_bump (seed 001 §5) on fuzzed jets and bumps (w,
+// tau, kind; NULL bump), then the clearance (54) and deviance (58) of what
+// was built: documented statuses, outputs untouched on error, finite
+// values on OK, the pieces' domains.
+void op_bump(Input& in, Ctx& c) {
+  cyc_ringed_jet a, b;
+  fill_jet(in, a);
+  fill_jet(in, b);
+  cyc_directrix_bump bump;
+  const bool null_bump = in.rarely();
+  in.fill(bump.w, 3, in.rarely() ? 0 : 1);
+  bump.tau = in.flag() ? in.range(1, 15) / 16.0 : in.wild();
+  bump.kind = in.rarely() ? in.range(-2, 3) : in.range(0, 1);
+  cyc_pcurve_blend_options o;
+  cyc_pcurve_blend_options_init(&o);
+  if (in.flag()) o.tau = in.flag() ? bump.tau : in.range(1, 15) / 16.0;
+  cyc_surface* pieces[2] = {kSentinel, kSentinel};
+  int count = -7;
+  FZ_LOG("cyc_blend_ringed_pcurve_bump w %a %a %a tau %a kind %d blend tau %a null %d", bump.w[0],
+         bump.w[1], bump.w[2], bump.tau, bump.kind, o.tau, int(null_bump));
+  const int s = cyc_blend_ringed_pcurve_bump(c.ctx, &a, &b, &o, null_bump ? nullptr : &bump,
+                                             pieces, &count);
+  c.check("cyc_blend_ringed_pcurve_bump", s);
+  const bool w_zero = bump.w[0] == 0 && bump.w[1] == 0 && bump.w[2] == 0;
+  if (!null_bump && bump.kind != CYC_BUMP_SINGLE && bump.kind != CYC_BUMP_TWO_PIECE)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "bump kind %d gives %s", bump.kind, cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(pieces[0] == kSentinel && pieces[1] == kSentinel && count == -7,
+             "bump: outputs written on error");
+    return;
+  }
+  FZ_CHECK(null_bump || w_zero || (bump.tau > 0 && bump.tau < 1), "bump tau %g accepted",
+           bump.tau);
+  const bool split = o.tau != 0.0 || (!null_bump && !w_zero && bump.kind == CYC_BUMP_TWO_PIECE);
+  FZ_CHECK(count == (split ? 2 : 1), "bump: count %d", count);
+  for (int k = 0; k < count; ++k) {
+    check_points(c, pieces[k], nullptr, "cyc_blend_ringed_pcurve_bump");
+    const double center[3] = {a.d[0], a.d[1], a.d[2] + 1};
+    double clear = 7, at = 7, dev = 7;
+    const int sc = cyc_surface_sphere_clearance(c.ctx, pieces[k], center, 0.5, &clear, &at);
+    c.check("cyc_surface_sphere_clearance", sc);
+    if (sc == CYC_OK)
+      FZ_CHECK(std::isfinite(clear) && std::isfinite(at), "clearance not finite");
+    else
+      FZ_CHECK(clear == 7 && at == 7, "clearance written on error");
+    const int sd = cyc_surface_normal_deviance(c.ctx, pieces[k], &dev);
+    c.check("cyc_surface_normal_deviance", sd);
+    if (sd == CYC_OK)
+      FZ_CHECK(std::isfinite(dev) && dev >= 0, "deviance %g", dev);
+    else
+      FZ_CHECK(dev == 7, "deviance written on error");
+    cyc_surface_destroy(c.ctx, pieces[k]);
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -434,12 +490,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const int nops = in.range(1, 8);
   for (int i = 0; i < nops; ++i) {
     // One byte: odd = blend (the old flag), 2 mod 8 = the (d, n, rho)
-    // creators, other even values = create (old seeds keep their meaning).
+    // creators, 4 mod 8 = the bumped blend, other even values = create
+    // (old seeds keep their meaning).
     const int op = in.range(0, 255);
     if (op % 2 == 1)
       op_blend(in, c);
     else if (op % 8 == 2)
       op_dnr(in, c);
+    else if (op % 8 == 4)
+      op_bump(in, c);
     else
       op_create(in, c);
   }

@@ -2004,6 +2004,25 @@ class RingedEncoder(Encoder):
         self.flag(True)
         self.moderate(phi)
 
+    def bump(self, a, b, w=(0, 0, -1), tau=0.5, kind=0, blend_tau=None, null_bump=False):
+        """op_bump: cyc_blend_ringed_pcurve_bump; blend_tau None: degree 6,
+        "same": the bump's tau, else a sixteenth."""
+        self.range(0, 255, 4)  # op_bump
+        self.jet(a)
+        self.jet(b)
+        self.rarely(null_bump)
+        self.rarely(False)
+        self.fill(w, 1)
+        self.flag(True)
+        self.range(1, 15, int(tau * 16))
+        self.rarely(False)
+        self.range(0, 1, kind)
+        self.flag(blend_tau is not None)
+        if blend_tau is not None:
+            self.flag(blend_tau == "same")
+            if blend_tau != "same":
+                self.range(1, 15, int(blend_tau * 16))
+
 
 def ringed_seeds():
     ex41_a = {"d": (-4, -3, 1), "dd": (2, 4, 3), "n": (1, 1, 1), "dn": (0, 1, 1),
@@ -2046,6 +2065,15 @@ def ringed_seeds():
         lambda e: e.dnr(d1, nhor, method=3, den=(1, (2, 1))),
         lambda e: e.dnr(("point", (1, 2, 3)), ncub, method=4),
         lambda e: e.dnr(d1, ncub, method=None, rho_degree=0, rho=(2, 0, 0)),
+    ]).data()
+    # §5: Example 4.1's blend with bumps (52) and (57), with the P-biarc at
+    # the same and at another tau (refused), and a NULL bump.
+    seeds["seed-bump"] = RingedEncoder([
+        lambda e: e.bump(ex41_a, ex41_b, w=(0, 0, -6)),
+        lambda e: e.bump(ex41_a, ex41_b, w=(1, 2, 0.5), tau=0.25, kind=1),
+        lambda e: e.bump(ex41_a, ex41_b, w=(1, 2, 0.5), tau=0.25, kind=1, blend_tau="same"),
+        lambda e: e.bump(ex41_a, ex41_b, w=(1, 2, 0.5), tau=0.25, kind=1, blend_tau=0.5),
+        lambda e: e.bump(ex41_a, ex41_b, null_bump=True, blend_tau=0.5),
     ]).data()
     seeds["seed-create"] = RingedEncoder([
         lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("point", (0, 0, 1)),

@@ -2571,6 +2571,58 @@ static void test_ringed(cyc_context* ctx) {
     cyc_surface_destroy(ctx, pieces[0]);
     cyc_surface_destroy(ctx, pieces[1]);
   }
+  {
+    /* Seed 001 §5: a bump moves the middle of the blend by w (d at t = 1/2:
+     * (-2.125, -1.125, 0.75) + w); clearance (54) and deviance (58). */
+    cyc_directrix_bump bump;
+    const double s0[3] = {-2.125, -1.125, 1.25};
+    double clear = 7, at = 7, dev = 7, clear2 = 7;
+    bump.w[0] = 0; bump.w[1] = 0; bump.w[2] = -6;
+    bump.tau = 0.5;
+    bump.kind = 5;
+    pieces[0] = pieces[1] = SURF_SENT;
+    count = -1;
+    CHECK_STATUS(ctx, cyc_blend_ringed_pcurve_bump(ctx, &a, &b, NULL, &bump, pieces, &count),
+                 CYC_E_INVALID_ARGUMENT);
+    bump.kind = CYC_BUMP_SINGLE;
+    bump.tau = 0;
+    CHECK_STATUS(ctx, cyc_blend_ringed_pcurve_bump(ctx, &a, &b, NULL, &bump, pieces, &count),
+                 CYC_E_BAD_DOMAIN);
+    CHECK(pieces[0] == SURF_SENT && count == -1);
+    CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, NULL, pieces, &count), CYC_OK);
+    if (count == 1) {
+      CHECK_STATUS(ctx, cyc_surface_sphere_clearance(ctx, pieces[0], s0, -1, &clear, &at),
+                   CYC_E_INVALID_ARGUMENT);
+      CHECK(clear == 7 && at == 7);
+      CHECK_STATUS(ctx, cyc_surface_sphere_clearance(ctx, pieces[0], s0, 0.5, &clear, &at),
+                   CYC_OK);
+      CHECK(clear < -1 && at > 0 && at < 1);
+      CHECK_STATUS(ctx, cyc_surface_normal_deviance(ctx, pieces[0], NULL), CYC_E_NULL_ARGUMENT);
+      CHECK_STATUS(ctx, cyc_surface_normal_deviance(ctx, pieces[0], &dev), CYC_OK);
+      CHECK(dev > 0 && dev < 1);
+      cyc_surface_destroy(ctx, pieces[0]);
+    }
+    bump.tau = 0.5;
+    CHECK_STATUS(ctx, cyc_blend_ringed_pcurve_bump(ctx, &a, &b, NULL, &bump, pieces, &count),
+                 CYC_OK);
+    if (count == 1) {
+      CHECK_STATUS(ctx, cyc_surface_eval(ctx, pieces[0], 0.5, 0.0, x, NULL, NULL, NULL), CYC_OK);
+      CHECK(fabs(x[0] + 2.600946726) < 1e-9 && fabs(x[1] - 0.3632476150) < 1e-9 &&
+            fabs(x[2] - 0.75 + 6) < 1e-9);
+      CHECK_STATUS(ctx, cyc_surface_sphere_clearance(ctx, pieces[0], s0, 0.5, &clear2, NULL),
+                   CYC_OK);
+      CHECK(clear2 > clear + 1);
+      cyc_surface_destroy(ctx, pieces[0]);
+    }
+    bump.kind = CYC_BUMP_TWO_PIECE;
+    CHECK_STATUS(ctx, cyc_blend_ringed_pcurve_bump(ctx, &a, &b, NULL, &bump, pieces, &count),
+                 CYC_OK);
+    CHECK(count == 2);
+    if (count == 2) {
+      cyc_surface_destroy(ctx, pieces[0]);
+      cyc_surface_destroy(ctx, pieces[1]);
+    }
+  }
 }
 
 static void test_blends(cyc_context* ctx) {

@@ -11,6 +11,7 @@
 #include "cyclide/blend.hpp"
 #include "cyclide/contour.hpp"
 #include "cyclide/pcurve.hpp"
+#include "cyclide/ringed.hpp"
 
 using namespace cyclide;
 
@@ -608,4 +609,138 @@ TEST(ContourCurves, Equation72PythagoreanOrientation) {
             Status::not_pythagorean);
   EXPECT_EQ(contour_curves_71(d, n, poly({0.5}), poly({1.0}), Vec3d::Zero(), plus, minus),
             Status::invalid_argument);
+}
+
+namespace {
+
+using T2 = Taylor<double, 2>;
+
+T2 series(double v, double d1, double d2) {
+  T2 s;
+  s.c[0] = v;
+  s.c[1] = d1;
+  s.c[2] = d2 / 2;
+  return s;
+}
+
+// The Hermite data (37) of a canal surface (spine m, radius r) read as a
+// ringed surface by eq. (1), from the values and first two derivatives.
+RingedJet canal_jet(const Vec3d& m, const Vec3d& dm, const Vec3d& ddm, double r, double dr,
+                    double ddr) {
+  Vec3<T2> s;
+  for (int j = 0; j < 3; ++j) s[j] = series(m[j], dm[j], ddm[j]);
+  const T2 r2 = series(r * r, 2 * r * dr, 2 * (dr * dr + r * ddr));
+  const RingedData R = ringed_from_canal(s, r2);
+  RingedJet J;
+  J.d = R.c;
+  J.dd = R.dc;
+  J.n = R.n;
+  J.dn = R.dn;
+  J.rho = std::sqrt(R.rho2);
+  J.drho = R.rho_rho_prime / J.rho;
+  return J;
+}
+
+}  // namespace
+
+// Example 5.2, eqs. (58)-(61): the canal surfaces (59) at t = 1 and (60) at
+// t = 0 read as ringed surfaces (1), their §4 blend (Ferguson cubics and
+// the degree-6 P-curve (43), + sign), the deviance (58) of the blend
+// (0.336653; paper 0.337), and with the bump of v (61), tau = 1/2: (52)
+// with the sign of ERRATA.md gives 0.111879 (paper 0.112; as printed 0.646),
+// (57) gives 0.1032 (transcription's notes).
+TEST(ConstrainedBlend, Example52MoreNormalBlend) {
+  const double a = 0.3 - 1.1;  // 0.3 t - 1.1 at t = 1
+  const RingedJet J1 = canal_jet(Vec3d(a, a * a - 1, a * a * a), Vec3d(0.3, 0.6 * a, 0.9 * a * a),
+                                 Vec3d(0, 0.18, 0.54 * a), 0.03 - 0.22 + 0.736667,
+                                 0.06 - 0.22, 0.06);
+  const RingedJet J2 = canal_jet(Vec3d(2, 2, 1), Vec3d(0.3, 1.2, 0.6), Vec3d(0, 0.36, 0.18), 1,
+                                 0.3, 0.09);
+  // The transcription's Hermite data.
+  EXPECT_LT((J1.d - Vec3d(-0.759765437551, -0.424375299919, -0.434749640097)).norm(), 1e-11);
+  EXPECT_LT((J1.dd - Vec3d(0.314498877110, -0.479057465906, 0.545900074124)).norm(), 1e-11);
+  EXPECT_LT((J1.n - Vec3d(0.3, -0.48, 0.576)).norm(), 1e-14);
+  EXPECT_LT((J1.dn - Vec3d(0, 0.18, -0.432)).norm(), 1e-14);
+  EXPECT_NEAR(J1.rho, 0.535830375705, 1e-11);
+  EXPECT_NEAR(J1.drho, -0.159871806151, 1e-11);
+  EXPECT_LT((J2.d - Vec3d(1.95238095238, 1.80952380952, 0.904761904762)).norm(), 1e-10);
+  EXPECT_LT((J2.dd - Vec3d(0.298639455782, 1.13741496599, 0.568707482993)).norm(), 1e-10);
+  EXPECT_NEAR(J2.rho, 0.975900072949, 1e-11);
+  EXPECT_NEAR(J2.drho, 0.292072950404, 1e-11);
+  // (58) on the plain blend and on the bumped ones.
+  Surface P[2];
+  int count = 0;
+  double dev = 0;
+  ASSERT_EQ(make_ringed_pcurve_blend(J1, J2, RingedBlendOptions(), P, count), Status::ok);
+  ASSERT_EQ(normal_deviance(P[0], dev), Status::ok);
+  EXPECT_NEAR(dev, 0.336653, 1e-6);
+  RingedBlendOptions o;
+  o.bump.w = Vec3d(-0.23824, -1.04859, 0.13459);
+  o.bump.tau = 0.5;
+  ASSERT_EQ(make_ringed_pcurve_blend(J1, J2, o, P, count), Status::ok);
+  ASSERT_EQ(count, 1);
+  ASSERT_EQ(normal_deviance(P[0], dev), Status::ok);
+  EXPECT_NEAR(dev, 0.111879, 1e-6);
+  // The bump moved d by w at tau and kept the ends (51).
+  Surface Q[2];
+  ASSERT_EQ(make_ringed_pcurve_blend(J1, J2, RingedBlendOptions(), Q, count), Status::ok);
+  RingedJet K, L;
+  ASSERT_EQ(ringed_jet(P[0], 0.5, K), Status::ok);
+  ASSERT_EQ(ringed_jet(Q[0], 0.5, L), Status::ok);
+  EXPECT_LT((K.d - L.d - o.bump.w).norm(), 1e-12);
+  EXPECT_LT((K.dd - L.dd).norm(), 1e-11);  // b'(tau) = 0
+  for (int e = 0; e < 2; ++e) {
+    ASSERT_EQ(ringed_jet(P[0], double(e), K), Status::ok);
+    const RingedJet& J = e ? J2 : J1;
+    EXPECT_LT((K.d - J.d).norm() + (K.dd - J.dd).norm(), 1e-12);
+  }
+  // (57): two pieces split at tau, joined C^1.
+  o.bump.kind = BumpKind::two_piece;
+  ASSERT_EQ(make_ringed_pcurve_blend(J1, J2, o, P, count), Status::ok);
+  ASSERT_EQ(count, 2);
+  double dev2 = 0;
+  ASSERT_EQ(normal_deviance(P[0], dev), Status::ok);
+  ASSERT_EQ(normal_deviance(P[1], dev2), Status::ok);
+  EXPECT_NEAR(dev + dev2, 0.1032, 1e-4);
+  ASSERT_EQ(ringed_jet(P[0], 0.5, K), Status::ok);
+  ASSERT_EQ(ringed_jet(P[1], 0.5, L), Status::ok);
+  EXPECT_LT((K.d - L.d).norm() + (K.dd - L.dd).norm() + (K.n - L.n).norm(), 1e-11);
+  // Statuses: tau of the bump outside (0, 1); a P-biarc split elsewhere.
+  o.bump.tau = 1.0;
+  EXPECT_EQ(make_ringed_pcurve_blend(J1, J2, o, P, count), Status::bad_domain);
+  o.bump.tau = 0.5;
+  o.tau = 0.25;
+  EXPECT_EQ(make_ringed_pcurve_blend(J1, J2, o, P, count), Status::invalid_argument);
+}
+
+// Eq. (54) on Example 4.1's blend: the clearance from a sphere around the
+// blend's middle circle is negative (it meets the blend), and a bump away
+// from it clears it; the clearance is exact at the minimizer.
+TEST(ConstrainedBlend, Equation54SphereClearance) {
+  Surface P[2];
+  int count = 0;
+  ASSERT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), RingedBlendOptions(), P,
+                                     count),
+            Status::ok);
+  RingedJet M;
+  ASSERT_EQ(ringed_jet(P[0], 0.5, M), Status::ok);
+  const Vec3d s = M.d + Vec3d(0, 0, 0.5);
+  double clear = 0, at = -1;
+  ASSERT_EQ(sphere_clearance(P[0], s, 0.5, clear, &at), Status::ok);
+  EXPECT_LT(clear, -1.0);
+  RingedJet A;
+  ASSERT_EQ(ringed_jet(P[0], at, A), Status::ok);
+  EXPECT_NEAR(clear, (A.d - s).norm() - A.rho - 0.5, 1e-14);
+  for (double u : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+    RingedJet U;
+    ASSERT_EQ(ringed_jet(P[0], u, U), Status::ok);
+    EXPECT_GE((U.d - s).norm() - U.rho - 0.5, clear - 1e-15);
+  }
+  RingedBlendOptions o;
+  o.bump.w = Vec3d(0, 0, -6);
+  ASSERT_EQ(make_ringed_pcurve_blend(example41_start(), example41_end(), o, P, count), Status::ok);
+  double moved = 0;
+  ASSERT_EQ(sphere_clearance(P[0], s, 0.5, moved), Status::ok);
+  EXPECT_GT(moved, clear + 1.0);
+  EXPECT_EQ(sphere_clearance(P[0], s, -1.0, moved), Status::invalid_argument);
 }

@@ -191,7 +191,14 @@ void cyc_pcurve_blend_options_init(cyc_pcurve_blend_options* options) {
 int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc_ringed_jet* b,
                             const cyc_pcurve_blend_options* options, cyc_surface** pieces,
                             int* count) {
-  const char* fn = "cyc_blend_ringed_pcurve";
+  return cyc_blend_ringed_pcurve_bump(ctx, a, b, options, nullptr, pieces, count);
+}
+
+int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
+                                 const cyc_ringed_jet* b, const cyc_pcurve_blend_options* options,
+                                 const cyc_directrix_bump* bump, cyc_surface** pieces,
+                                 int* count) {
+  const char* fn = bump ? "cyc_blend_ringed_pcurve_bump" : "cyc_blend_ringed_pcurve";
   return run(ctx, fn, [&] {
     REQUIRE(a);
     REQUIRE(b);
@@ -205,6 +212,13 @@ int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc
       if (o.sign != 1 && o.sign != -1)
         return fail(CYC_E_INVALID_ARGUMENT, "%s: sign = %d is not +1 or -1", fn, o.sign);
     }
+    if (bump) {
+      if (bump->kind != CYC_BUMP_SINGLE && bump->kind != CYC_BUMP_TWO_PIECE)
+        return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown bump kind %d", fn, bump->kind);
+      o.bump.w = vec(bump->w);
+      o.bump.tau = bump->tau;
+      o.bump.kind = BumpKind(bump->kind);
+    }
     Surface S[2];
     int n = 0;
     double bad_u = NAN;  // set where a piece's domain scan fails
@@ -215,7 +229,8 @@ int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc
       if (s == Status::bad_domain)
         return fail(int(s), "%s: tau = %.17g is neither 0 nor in (0, 1)", fn, o.tau);
       if (s == Status::invalid_argument)
-        return fail(int(s), "%s: the projection direction v is zero", fn);
+        return fail(int(s), "%s: the projection direction v is zero, or a two-piece bump "
+                    "and a P-biarc split at different tau", fn);
       return located(s) && std::isfinite(bad_u) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
     }
     cyc_surface* h[2] = {nullptr, nullptr};
@@ -287,6 +302,38 @@ int cyc_ringed_contour_curves(cyc_context* ctx, const cyc_curve* d, const cyc_cu
     }
     *plus = h[0];
     *minus = h[1];
+    return ok();
+  });
+}
+
+int cyc_surface_sphere_clearance(cyc_context* ctx, const cyc_surface* surface,
+                                 const double center[3], double radius, double* clearance,
+                                 double* at_u) {
+  const char* fn = "cyc_surface_sphere_clearance";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(center);
+    REQUIRE(clearance);
+    double c = 0, u = 0;
+    if (Status s = sphere_clearance(surface->surface, vec(center), radius, c, &u);
+        s != Status::ok) {
+      if (s == Status::invalid_argument) return fail(int(s), "%s: radius < 0", fn);
+      return from_core(fn, s);
+    }
+    *clearance = c;
+    if (at_u) *at_u = u;
+    return ok();
+  });
+}
+
+int cyc_surface_normal_deviance(cyc_context* ctx, const cyc_surface* surface, double* value) {
+  const char* fn = "cyc_surface_normal_deviance";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(value);
+    double v = 0;
+    if (Status s = normal_deviance(surface->surface, v); s != Status::ok) return from_core(fn, s);
+    *value = v;
     return ok();
   });
 }

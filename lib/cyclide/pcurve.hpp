@@ -195,14 +195,47 @@ Status ringed_jet(const Surface& S, double u, RingedJet& out);
 // circles' d, n, rho are C^1; n's length is part of the data). Statuses of
 // the pieces above and of make_ringed (with *bad_u); nothing is written
 // on error.
+// §5, eqs. (50)-(52), (57): a bump added to the blend's directrix,
+// d* = d + w b(t) (the paper's (50) calls w "v"; here v is the projection
+// direction of (15)). b(0) = b'(0) = b(1) = b'(1) = 0 (51), b(tau) = 1 and
+// b'(tau) = 0: single = (52) with the sign of ERRATA.md (as printed (52)
+// is -1 at tau and Example 5.2 does not reproduce), a quintic; two_piece =
+// (57), cubics on [0, tau] and [tau, 1] (the blend is then split at tau).
+// Only d moves: n, rho and f are kept, so c* = c + w b and the circles are
+// translated — still an exact rational ringed surface.
+enum class BumpKind : int { single = 0, two_piece = 1 };
+struct DirectrixBump {
+  Vec3d w = Vec3d::Zero();  // displacement at t = tau (zero: no bump)
+  double tau = 0.5;         // in (0, 1)
+  BumpKind kind = BumpKind::single;
+};
+// The bump's polynomials on [0, tau] and [tau, 1] (equal for single).
+void bump_polys(const DirectrixBump& bump, CurvePoly& left, CurvePoly& right);
+
 struct RingedBlendOptions {
   int sign = 1;                  // branch of (43) / (47)
   double tau = 0.0;              // 0: degree 6; in (0, 1): P-biarc
   Vec3d v = Vec3d::UnitZ();      // the projection direction (unit)
+  DirectrixBump bump;            // §5: none by default
 };
 Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
                                 const RingedBlendOptions& options, Surface (&pieces)[2],
                                 int& count, double* bad_u = nullptr);
+
+// Eq. (54) on any circle-family surface (d = the circle's center, rho its
+// radius): the clearance min over [u0, u1] of |d(t) - s| - rho(t) - r from
+// the sphere (s, r) — positive: no circle meets the sphere (a sufficient
+// test, as the paper says). 257 samples, then golden-section refinement
+// of the best bracket (1e-12 in t). *at_u receives the minimizer.
+// invalid_argument for r < 0; statuses of Surface::ringed.
+Status sphere_clearance(const Surface& S, const Vec3d& s, double r, double& clearance,
+                        double* at_u = nullptr);
+// Eq. (58): the deviance of the directrix tangents from the circle axes,
+// the integral over [u0, u1] of sin^2 angle(n, d') (transcription note 8:
+// (58)'s integrand for any f perpendicular to n), by composite Simpson on
+// 1024 intervals (error ~1e-12 for the blends here). singular_point where
+// d' = 0 (the angle is undefined); statuses of Surface::ringed.
+Status normal_deviance(const Surface& S, double& value);
 
 }  // namespace v0
 }  // namespace cyclide

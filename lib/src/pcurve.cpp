@@ -1,6 +1,7 @@
 #include "cyclide/pcurve.hpp"
 
 #include "power_form.hpp"
+#include "cyclide/ringed.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -415,7 +416,24 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
       return st;
     m = 2;
   }
-  const double knots[3] = {0.0, m == 1 ? 1.0 : options.tau, 1.0};
+  // §5: the bump; the two-piece bump (57) splits the blend at its tau.
+  const DirectrixBump& B = options.bump;
+  if (!input_ok(B.w) || !input_ok(B.tau)) return Status::not_finite;
+  const bool bumped = B.w != Vec3d::Zero();
+  if (bumped && !(B.tau > 0 && B.tau < 1)) return Status::bad_domain;
+  if (bumped && B.kind != BumpKind::single && B.kind != BumpKind::two_piece)
+    return Status::invalid_argument;
+  double split = m == 1 ? 1.0 : options.tau;
+  if (bumped && B.kind == BumpKind::two_piece) {
+    if (m == 2 && options.tau != B.tau) return Status::invalid_argument;  // one split only
+    if (m == 1) P[1] = P[0];  // the same P-curve on both sides
+    m = 2;
+    split = B.tau;
+  }
+  CurvePoly bump[2];
+  if (bumped) bump_polys(B, bump[0], bump[1]);
+  const Vec3d Mw = M * B.w;
+  const double knots[3] = {0.0, split, 1.0};
   Surface out[2];
   for (int k = 0; k < m; ++k) {
     // The coefficients (47) of the P-biarc grow like 1/tau in the piece
@@ -429,7 +447,11 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
     const bool mirrored = k == 1;
     CurvePoly Dl[3], n3l = mirrored ? shifted(n3, 1, -1) : n3,
                      rhol = mirrored ? shifted(rho, 1, -1) : rho;
-    for (int j = 0; j < 3; ++j) Dl[j] = mirrored ? shifted(D[j], 1, -1) : D[j];
+    for (int j = 0; j < 3; ++j) {
+      // (50): d* = d + w b, in the frame of v.
+      const CurvePoly Dj = bumped ? D[j] + bump[k].scaled(Mw[j]) : D[j];
+      Dl[j] = mirrored ? shifted(Dj, 1, -1) : Dj;
+    }
     // n = (x1, x2, n3); f = n x e3 / sigma = (x2, -x1, 0) / sigma (15);
     // c = d + rho f (4); everything rotated back to world coordinates.
     CurvePoly x1, x2, sigma;
@@ -460,6 +482,97 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
 }
 
 }  // namespace
+
+// (52) (sign per ERRATA.md) and (57).
+void bump_polys(const DirectrixBump& bump, CurvePoly& left, CurvePoly& right) {
+  const double tau = bump.tau;
+  const CurvePoly t = CurvePoly::linear(0, 1), one_minus_t = CurvePoly::linear(1, -1);
+  CurvePoly a, b;
+  if (bump.kind == BumpKind::single) {
+    // -(1 - t)^2 t^2 (t (2 - 4 tau) + tau (5 tau - 3)) / ((1 - tau)^3 tau^3).
+    multiply(one_minus_t, one_minus_t, a);
+    multiply(a, t, b);
+    multiply(b, t, a);
+    multiply(a, CurvePoly::linear(tau * (5 * tau - 3), 2 - 4 * tau), b);
+    left = right = b.scaled(-1.0 / (std::pow(1 - tau, 3) * std::pow(tau, 3)));
+    return;
+  }
+  // t^2 (3 tau - 2 t) / tau^3 and (t - 1)^2 (2 t - 3 tau + 1) / (1 - tau)^3.
+  multiply(t, t, a);
+  multiply(a, CurvePoly::linear(3 * tau, -2), b);
+  left = b.scaled(1.0 / std::pow(tau, 3));
+  multiply(one_minus_t, one_minus_t, a);
+  multiply(a, CurvePoly::linear(1 - 3 * tau, 2), b);
+  right = b.scaled(1.0 / std::pow(1 - tau, 3));
+}
+
+namespace {
+
+// |d(u) - s| - rho(u) - r.
+Status clearance_at(const Surface& S, const Vec3d& s, double r, double u, double& value) {
+  RingedData R;
+  if (Status st = S.ringed(u, R); st != Status::ok) return st;
+  value = (R.c - s).norm() - std::sqrt(std::max(0.0, R.rho2)) - r;
+  return Status::ok;
+}
+
+}  // namespace
+
+// Eq. (54).
+Status sphere_clearance(const Surface& S, const Vec3d& s, double r, double& clearance,
+                        double* at_u) {
+  if (!input_ok(s) || !input_ok(r)) return Status::not_finite;
+  if (!(r >= 0)) return Status::invalid_argument;
+  constexpr int kSamples = 257;
+  double best = HUGE_VAL, best_u = S.u0;
+  int best_k = 0;
+  for (int k = 0; k < kSamples; ++k) {
+    const double u = S.u0 + (S.u1 - S.u0) * k / (kSamples - 1);
+    double v;
+    if (Status st = clearance_at(S, s, r, u, v); st != Status::ok) return st;
+    if (v < best) best = v, best_u = u, best_k = k;
+  }
+  // Golden section on the bracket around the best sample.
+  double lo = S.u0 + (S.u1 - S.u0) * std::max(0, best_k - 1) / (kSamples - 1);
+  double hi = S.u0 + (S.u1 - S.u0) * std::min(kSamples - 1, best_k + 1) / (kSamples - 1);
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1, f2;
+  if (Status st = clearance_at(S, s, r, x1, f1); st != Status::ok) return st;
+  if (Status st = clearance_at(S, s, r, x2, f2); st != Status::ok) return st;
+  while (hi - lo > 1e-12 * (1 + std::abs(lo))) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo);
+      if (Status st = clearance_at(S, s, r, x1, f1); st != Status::ok) return st;
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo);
+      if (Status st = clearance_at(S, s, r, x2, f2); st != Status::ok) return st;
+    }
+  }
+  if (std::min(f1, f2) < best) best = std::min(f1, f2), best_u = f1 < f2 ? x1 : x2;
+  if (!std::isfinite(best)) return Status::numerical_overflow;
+  clearance = best;
+  if (at_u) *at_u = best_u;
+  return Status::ok;
+}
+
+// Eq. (58).
+Status normal_deviance(const Surface& S, double& value) {
+  constexpr int kIntervals = 1024;  // even
+  const double h = (S.u1 - S.u0) / kIntervals;
+  double sum = 0;
+  for (int k = 0; k <= kIntervals; ++k) {
+    RingedData R;
+    if (Status st = S.ringed(S.u0 + h * k, R); st != Status::ok) return st;
+    const double dd = R.dc.squaredNorm(), nn = R.n.squaredNorm();
+    if (!(dd > 0) || !(nn > 0)) return Status::singular_point;
+    const double cos2 = R.dc.dot(R.n) * R.dc.dot(R.n) / (dd * nn);
+    const double w = (k == 0 || k == kIntervals) ? 1 : (k % 2 ? 4 : 2);
+    sum += w * std::max(0.0, 1 - cos2);
+  }
+  value = sum * h / 3;
+  if (!std::isfinite(value)) return Status::numerical_overflow;
+  return Status::ok;
+}
 
 }  // namespace v0
 }  // namespace cyclide

@@ -712,6 +712,47 @@ CYC_API int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x
                                      const double* rho_den, const cyc_mobius* f, double u0,
                                      double u1, cyc_surface** out);
 
+/** Seed 001 §5, eqs. (50)-(52), (57): a bump added to the directrix of the
+ *  P-curve blend, d* = d + w b(t) (the paper's (50) calls w "v").
+ *  b(0) = b'(0) = b(1) = b'(1) = 0, b(tau) = 1, b'(tau) = 0. */
+#define CYC_BUMP_SINGLE 0    /* (52) with the sign of ERRATA.md (+1 at tau), a quintic */
+#define CYC_BUMP_TWO_PIECE 1 /* (57): cubics on [0, tau] and [tau, 1]; the blend is split at tau */
+typedef struct cyc_directrix_bump {
+  double w[3]; /* displacement of d at t = tau (all zero: no bump) */
+  double tau;  /* in (0, 1) */
+  int kind;    /* CYC_BUMP_* */
+} cyc_directrix_bump;
+
+/** cyc_blend_ringed_pcurve with the directrix moved by bump (NULL: none):
+ *  only d moves (n, rho and f are kept), so the circles are translated by
+ *  w b(t) and the ends (51) keep their Hermite data. A two-piece bump gives
+ *  two pieces [0, tau], [tau, 1] (with a P-biarc only at the same tau:
+ *  else CYC_E_INVALID_ARGUMENT). CYC_E_BAD_DOMAIN for the bump's tau
+ *  outside (0, 1) when w != 0, CYC_E_INVALID_ARGUMENT for an unknown kind;
+ *  else as cyc_blend_ringed_pcurve. */
+CYC_API int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
+                                         const cyc_ringed_jet* b,
+                                         const cyc_pcurve_blend_options* options,
+                                         const cyc_directrix_bump* bump, cyc_surface** pieces,
+                                         int* count);
+
+/** Eq. (54): the clearance min over the domain of |d(u) - s| - rho(u) - r of
+ *  any surface of the library (d the circle's center) from the sphere
+ *  (center, radius): positive means no circle meets the sphere (sufficient,
+ *  not necessary). 257 samples and golden-section refinement (1e-12 in u);
+ *  *at_u (may be NULL) receives the minimizer. CYC_E_INVALID_ARGUMENT for
+ *  radius < 0. */
+CYC_API int cyc_surface_sphere_clearance(cyc_context* ctx, const cyc_surface* surface,
+                                         const double center[3], double radius,
+                                         double* clearance, double* at_u);
+
+/** Eq. (58): the integral over the domain of sin^2 of the angle between the
+ *  circle axis n and the directrix tangent d' (how far a ringed surface is
+ *  from a normal one; Example 5.2), composite Simpson on 1024 intervals.
+ *  CYC_E_SINGULAR_POINT where d' = 0. */
+CYC_API int cyc_surface_normal_deviance(cyc_context* ctx, const cyc_surface* surface,
+                                        double* value);
+
 /** Contour points (seed 001 Definition 7.1: the surface normal is orthogonal
  *  to v; the silhouette in the projection along v) on the circle at u of
  *  any surface of the library, v of any nonzero length: up to 4 points,
