@@ -862,7 +862,8 @@ void BM_ContinuityReport(benchmark::State& state) {
 // default objective and options (8 x 4 quadrature, up to 50
 // Levenberg-Marquardt iterations), then cyc_surface_destroy. Every solve is
 // the same (deterministic), so the last summary gives the counters:
-// "iterations" (Ceres') and "cost_reduction" (initial / final cost).
+// "iterations" (Ceres', all rounds), "cost_reduction" (initial / final
+// cost), "initial_cost" and "final_cost".
 void BM_OptimizeBlend(benchmark::State& state, int kind) {
   if (!cyc_optimizer_available()) {
     state.SkipWithError("no optimizer tier in this build (Ceres not found)");
@@ -896,6 +897,8 @@ void BM_OptimizeBlend(benchmark::State& state, int kind) {
   }
   state.counters["iterations"] = sum.iterations;
   state.counters["cost_reduction"] = sum.final_cost > 0 ? sum.initial_cost / sum.final_cost : 0;
+  state.counters["initial_cost"] = sum.initial_cost;
+  state.counters["final_cost"] = sum.final_cost;
   state.SetItemsProcessed(state.iterations());
 }
 

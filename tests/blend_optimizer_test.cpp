@@ -113,6 +113,58 @@ TEST(BlendOptimizer, CanalK2NeverWorseAndG1) {
   expect_join(eo, 1, X, 1.0, 2, 0);
 }
 
+// The Fig. 6 optima lie on bounds (SPEC §8e: the sin map's derivative
+// vanishes there; alone it crawled into the iteration limit of 50): the
+// active set pins them exactly and the solves converge before the limit, at
+// costs no higher than the crawl reached (0.3597, 0.2574, 0.00930).
+TEST(BlendOptimizer, Fig6BoundOptimaPinnedBeforeTheLimit) {
+  const Surface A = cone1(), B = cone2();
+  struct Case {
+    BlendKind kind;
+    int K, count;
+    double cost;
+  } const cases[] = {{BlendKind::ringed, 1, 3, 0.3597},
+                     {BlendKind::ringed, 2, 3, 0.2574},
+                     {BlendKind::canal, 2, 2, 0.00930}};
+  for (const Case& c : cases) {
+    Ends E = fig6_ends(A, B, c.count);
+    Surface X;
+    BlendEnd so, eo;
+    BlendSummary sum;
+    ASSERT_EQ(optimize_blend(c.kind, E.s, E.e, c.K, 0.0, 1.0, BlendObjective{}, BlendOptions{},
+                             X, &so, &eo, sum),
+              Status::ok);
+    EXPECT_EQ(sum.termination, BlendTermination::converged) << "K " << c.K;
+    EXPECT_LT(sum.iterations, 50) << "K " << c.K;
+    EXPECT_LE(sum.final_cost, c.cost) << "K " << c.K;
+    if (c.kind == BlendKind::ringed) EXPECT_EQ(eo.lambda, -0.25);  // on |lambda| >= 1/4
+    if (c.K == 2) EXPECT_EQ(std::abs(eo.phi[0]), 4.0);              // on |phi''| <= 4
+  }
+}
+
+// A start on a bound (phi'' of the start = -4 |lambda_0|): the map alone has
+// a vanishing derivative there; the active set moves it in or pins it.
+TEST(BlendOptimizer, StartOnABound) {
+  const Surface A = cone1(), B = cone2();
+  for (double phi : {-4.0, 4.0}) {
+    Ends E = fig6_ends(A, B, 3);
+    E.s.phi[0] = phi;
+    Surface X;
+    BlendEnd so, eo;
+    BlendSummary sum;
+    ASSERT_EQ(optimize_blend(BlendKind::ringed, E.s, E.e, 2, 0.0, 1.0, BlendObjective{},
+                             BlendOptions{}, X, &so, &eo, sum),
+              Status::ok);
+    EXPECT_LT(sum.final_cost, sum.initial_cost);
+    EXPECT_EQ(sum.termination, BlendTermination::converged) << phi;
+    EXPECT_GE(so.phi[0], -4.0);
+    EXPECT_LE(so.phi[0], 4.0);
+    if (phi < 0) EXPECT_GT(so.phi[0], -4.0);  // it left the bound it started on
+    expect_join(so, 0, X, 0.0, 2, 2);
+    expect_join(eo, 1, X, 1.0, 2, 2);
+  }
+}
+
 // An obstacle on the default blend: the optimizer moves the blend away
 // (the obstacle term drops, the closest approach grows).
 TEST(BlendOptimizer, ClearsASphericalObstacle) {

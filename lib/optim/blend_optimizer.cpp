@@ -336,6 +336,7 @@ struct Box {
   double mid[2 * kMaxBlendOrder] = {}, half[2 * kMaxBlendOrder] = {};
   double x0[2 * kMaxBlendOrder] = {};
   bool fixed[2 * kMaxBlendOrder] = {};
+  int pin[2 * kMaxBlendOrder] = {};  // -1 / +1: held at lo / hi (active set)
 
   Box(const std::vector<double>& l, const std::vector<double>& h, const std::vector<double>& x) {
     n = int(x.size());
@@ -354,11 +355,13 @@ struct Box {
     if (fixed[i]) return 0.0;
     return std::asin(std::min(std::max((x - mid[i]) / half[i], -1.0), 1.0));
   }
-  // x of the solver variable s, inside the box also after rounding.
+  // x of the solver variable s, inside the box also after rounding; a
+  // pinned parameter is its bound (constant).
   template <class T>
   T to_x(int i, const T& s) const {
     using std::sin;
     if (fixed[i]) return T(x0[i]);
+    if (pin[i] != 0) return T(pin[i] < 0 ? lo[i] : hi[i]);
     const T x = mid[i] + half[i] * sin(s);
     if (value_of(x) < lo[i]) return T(lo[i]);
     if (value_of(x) > hi[i]) return T(hi[i]);
@@ -374,10 +377,11 @@ struct Box {
 struct Residuals {
   const Problem* P;
   const Box* box;
+  bool identity = false;  // the parameters are x itself (the gradient in x)
   template <class T>
   bool operator()(const T* s, T* r) const {
     T x[2 * kMaxBlendOrder];
-    for (int i = 0; i < box->n; ++i) x[i] = box->to_x(i, s[i]);
+    for (int i = 0; i < box->n; ++i) x[i] = identity ? s[i] : box->to_x(i, s[i]);
     return evaluate(*P, x, r, nullptr);
   }
   template <class T>
@@ -389,10 +393,10 @@ struct Residuals {
 // The cost function for n = 2 free parameters (free_orders 1, the default
 // for K = 1), 4 (free_orders 2, the default for K >= 2) or 6: Jet<double,
 // n>; others: dynamic Jets of stride 4.
-ceres::CostFunction* make_cost(const Problem& P, const Box& box) {
+ceres::CostFunction* make_cost(const Problem& P, const Box& box, bool identity = false) {
   using ceres::AutoDiffCostFunction;
   using ceres::DYNAMIC;
-  auto* f = new Residuals{&P, &box};
+  auto* f = new Residuals{&P, &box, identity};
   switch (box.n) {
     case 2: return new AutoDiffCostFunction<Residuals, DYNAMIC, 2>(f, P.residuals());
     case 4: return new AutoDiffCostFunction<Residuals, DYNAMIC, 4>(f, P.residuals());
@@ -404,6 +408,175 @@ ceres::CostFunction* make_cost(const Problem& P, const Box& box) {
       return cost;
     }
   }
+}
+
+// The box-constrained solve (SPEC.md §8e): Ceres' Levenberg-Marquardt on
+// the solver variables s (x = mid + half sin(s)) in rounds with an active
+// set. The map's derivative vanishes on the bounds, so on its own an optimum
+// on a bound is only crawled towards (the benchmarks ran into the iteration
+// limit). A round ends (iteration callback) when a parameter comes within
+// kNear of a bound (1 - |sin s| < kNear) that was not examined there yet;
+// then, and at the start if a parameter starts near a bound, the gradient in
+// x decides: pointing out of the box, the parameter is pinned at the bound
+// (held constant with the fixed ones by a SubsetManifold) and the rest are
+// solved again; pointing in, it stays free and no longer ends rounds. A
+// pinned parameter whose gradient points into the box at the end of a
+// round is released once (restarted kNear inside, where the map moves it).
+// The rounds share max_iterations; the best point of all rounds is kept.
+struct Solved {
+  int iterations = 0;  // Ceres' iterations of all rounds
+  bool limit = false;  // max_iterations reached before convergence
+};
+
+constexpr double kNear = 3e-2;
+
+bool near_bound(double s) { return 1.0 - std::abs(std::sin(s)) < kNear; }
+
+// The gradient of 1/2 |r|^2 in x (false: not evaluable there).
+bool gradient_x(const ceres::CostFunction& f, const std::vector<double>& x,
+                std::vector<double>& g) {
+  const size_t m = size_t(f.num_residuals()), n = x.size();
+  std::vector<double> r(m), J(m * n);
+  const double* xp = x.data();
+  double* jp = J.data();
+  if (!f.Evaluate(&xp, r.data(), &jp)) return false;
+  g.assign(n, 0.0);
+  for (size_t k = 0; k < m; ++k)
+    for (size_t i = 0; i < n; ++i) g[i] += J[k * n + i] * r[k];
+  for (double gi : g)
+    if (!std::isfinite(gi)) return false;
+  return true;
+}
+
+// Ends a round when a free parameter not yet examined comes near a bound
+// (after an accepted step; the state is updated every iteration).
+struct NearBound : ceres::IterationCallback {
+  const Box* box = nullptr;
+  const int* examined = nullptr;  // per parameter: bit 1 the lower, 2 the upper bound
+  const double* s = nullptr;
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& it) override {
+    if (!it.step_is_successful) return ceres::SOLVER_CONTINUE;
+    for (int i = 0; i < box->n; ++i)
+      if (!box->fixed[i] && box->pin[i] == 0 && near_bound(s[i]) &&
+          !(examined[i] & (s[i] > 0 ? 2 : 1)))
+        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    return ceres::SOLVER_CONTINUE;
+  }
+};
+
+Solved solve_box(const Problem& P, Box& box, const BlendOptions& options, std::vector<double>& x) {
+  Solved out;
+  const int n = box.n;
+  const double half_pi = std::acos(-1.0) / 2;
+  std::vector<double> s(x.size()), best_s(x.size()), g;
+  int examined[2 * kMaxBlendOrder] = {};  // the bounds a parameter was examined at
+  bool released[2 * kMaxBlendOrder] = {};
+  int best_pin[2 * kMaxBlendOrder] = {};
+  for (int i = 0; i < n; ++i) s[size_t(i)] = box.to_s(i, x[size_t(i)]);
+  const std::unique_ptr<ceres::CostFunction> fx(make_cost(P, box, true));
+  // The active set at x = x(s): 1 changed, 0 unchanged, -1 no gradient.
+  auto update = [&](bool at_start) {
+    for (int i = 0; i < n; ++i) x[size_t(i)] = box.to_x(i, s[size_t(i)]);
+    if (!gradient_x(*fx, x, g)) return -1;
+    bool changed = false;
+    for (int i = 0; i < n; ++i) {
+      if (box.fixed[i]) continue;
+      const double gi = g[size_t(i)];
+      if (box.pin[i] == 0) {
+        if (!near_bound(s[size_t(i)])) continue;
+        const int side = s[size_t(i)] > 0 ? 1 : -1;
+        if (gi * side < 0) {  // descent leaves the box: pin
+          box.pin[i] = side;
+          s[size_t(i)] = side * half_pi;
+          changed = true;
+          continue;
+        }
+        examined[i] |= side > 0 ? 2 : 1;  // stays free
+        if (at_start) {  // the map cannot move it off the bound
+          s[size_t(i)] = side * std::asin(1.0 - kNear);
+          changed = true;
+        }
+      } else if (gi * box.pin[i] > 0 && !released[i]) {  // descent enters the box
+        released[i] = true;
+        s[size_t(i)] = box.pin[i] * std::asin(1.0 - kNear);
+        box.pin[i] = 0;
+        changed = true;
+      }
+    }
+    return changed ? 1 : 0;
+  };
+  bool start_near = false;
+  for (int i = 0; i < n; ++i) start_near |= !box.fixed[i] && near_bound(s[size_t(i)]);
+  if (start_near && update(true) < 0) return out;  // x is the start
+  NearBound callback;
+  callback.box = &box;
+  callback.examined = examined;
+  callback.s = s.data();
+  double best = std::numeric_limits<double>::infinity();
+  for (int round = 0; round < 3 * n + 2; ++round) {
+    std::vector<int> constant;
+    for (int i = 0; i < n; ++i)
+      if (box.fixed[i] || box.pin[i] != 0) constant.push_back(i);
+    if (int(constant.size()) == n) {  // all pinned: the point is final
+      const double* sp = s.data();
+      std::vector<double> r(size_t(P.residuals()));
+      ceres::CostFunction* f = make_cost(P, box);
+      double c = 0;
+      if (f->Evaluate(&sp, r.data(), nullptr)) {
+        for (double ri : r) c += 0.5 * ri * ri;
+        if (c < best) {
+          best = c;
+          best_s = s;
+          std::copy(box.pin, box.pin + n, best_pin);
+        }
+      }
+      delete f;
+      break;
+    }
+    const int budget = options.max_iterations - out.iterations;
+    if (budget <= 0) {
+      out.limit = true;
+      break;
+    }
+    ceres::Problem problem;
+    problem.AddResidualBlock(make_cost(P, box), nullptr, s.data());
+    if (!constant.empty())
+      problem.SetManifold(s.data(), new ceres::SubsetManifold(n, constant));
+    ceres::Solver::Options so;
+    so.minimizer_type = ceres::TRUST_REGION;
+    so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = budget;
+    so.function_tolerance = options.function_tolerance;
+    so.gradient_tolerance = options.gradient_tolerance;
+    so.parameter_tolerance = options.parameter_tolerance;
+    so.logging_type = ceres::SILENT;
+    so.num_threads = 1;
+    so.update_state_every_iteration = true;
+    so.callbacks.push_back(&callback);
+    ceres::Solver::Summary cs;
+    ceres::Solve(so, &problem, &cs);
+    out.iterations += std::max(int(cs.iterations.size()) - 1, 0);
+    if (!cs.IsSolutionUsable()) break;
+    if (cs.final_cost < best) {
+      best = cs.final_cost;
+      best_s = s;
+      std::copy(box.pin, box.pin + n, best_pin);
+    }
+    if (cs.termination_type == ceres::NO_CONVERGENCE) {
+      out.limit = true;
+      break;
+    }
+    // Unchanged: converged, or the round was ended by a parameter that
+    // stays free (examined now: it no longer ends rounds).
+    const int active = update(false);
+    if (active < 0 || (active == 0 && cs.termination_type != ceres::USER_SUCCESS)) break;
+  }
+  if (std::isfinite(best)) {
+    std::copy(best_pin, best_pin + n, box.pin);
+    for (int i = 0; i < n; ++i) x[size_t(i)] = box.to_x(i, best_s[size_t(i)]);
+  }
+  return out;
 }
 
 // Cost 1/2 |r|^2 at params (double), with its terms. Not ok: the blend's
@@ -619,42 +792,17 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   const std::vector<double> x_start = x;
 
   // Solve: Ceres' Levenberg-Marquardt on the unconstrained solver
-  // variables s of the box (fixed parameters held constant), then x of s.
-  const Box box(lo, hi, x);
-  std::vector<double> s(x.size());
-  std::vector<int> fixed;
-  for (int i = 0; i < box.n; ++i) {
-    s[size_t(i)] = box.to_s(i, x[size_t(i)]);
-    if (box.fixed[i]) fixed.push_back(i);
-  }
-  ceres::Solver::Summary cs;
-  const bool solve = options.max_iterations > 0 && int(fixed.size()) < box.n;
-  if (solve) {
-    ceres::Problem problem;
-    problem.AddResidualBlock(make_cost(P, box), nullptr, s.data());
-    if (!fixed.empty())
-      problem.SetManifold(s.data(), new ceres::SubsetManifold(box.n, fixed));
-    ceres::Solver::Options so;
-    so.minimizer_type = ceres::TRUST_REGION;
-    so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = options.max_iterations;
-    so.function_tolerance = options.function_tolerance;
-    so.gradient_tolerance = options.gradient_tolerance;
-    so.parameter_tolerance = options.parameter_tolerance;
-    so.logging_type = ceres::SILENT;
-    so.num_threads = 1;
-    ceres::Solve(so, &problem, &cs);
-    for (int i = 0; i < box.n; ++i) x[size_t(i)] = box.to_x(i, s[size_t(i)]);
-  }
+  // variables s of the box with an active set of parameters held at their
+  // bounds (solve_box), then x of s.
+  Box box(lo, hi, x);
+  Solved solved;
+  if (options.max_iterations > 0) solved = solve_box(P, box, options, x);
 
   // The result: the optimum if it is a valid blend no worse than the start.
   BlendSummary R;
   R.initial_cost = cost0;
-  R.iterations = solve ? std::max(int(cs.iterations.size()) - 1, 0) : 0;
-  R.termination = solve && cs.termination_type == ceres::NO_CONVERGENCE
-                      ? BlendTermination::iteration_limit
-                      : BlendTermination::converged;
+  R.iterations = solved.iterations;
+  R.termination = solved.limit ? BlendTermination::iteration_limit : BlendTermination::converged;
   R.length_scale = P.L;
   R.fairness_scale = F0;
   double cost1 = 0;

@@ -2,7 +2,8 @@
 // the jets (phi', phi'', ...) of both ends of a canal or ringed blend
 // (seed 000 §9; blend.hpp BlendEnd) chosen by Ceres' Levenberg-Marquardt
 // (autodiff Jacobians; the box bounds enforced exactly by the smooth map
-// x = mid + half sin(s) of unconstrained variables) against a weighted sum of
+// x = mid + half sin(s) of unconstrained variables, with an active set that
+// pins parameters on their bounds) against a weighted sum of
 //   fairness    the integral of |x_tt|^2 + 2 |x_tv|^2 + |x_vv|^2 over the
 //               blend (Gauss-Legendre in t, both charts v in [-1, 1] and
 //               1/v in [-1, 1] of the circle), relative to the start blend's;
