@@ -6,7 +6,7 @@
 // creators from (d, n, rho): cyc_ringed_dnr_create (every field method and
 // unknown ones) and cyc_ringed_pcurve_create (Prop. 3.1), and the contour
 // points (Definition 7.1) of every surface built, and the bumped blend of
-// §5 with its clearance (54) and deviance (58).
+// §5 with its clearance (54) and deviance (58), and its optimizer (§5.a).
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -476,6 +476,67 @@ void op_bump(Input& in, Ctx& c) {
   }
 }
 
+// cyc_optimize_pcurve_bump (seed 001 §5.a) with hostile objectives and
+// options (weights, nodes, bounds, counts, NULL obstacles), on a small
+// budget (<= 8 iterations, <= 32 nodes) so ASan runs stay fast: documented
+// statuses, nothing written on error; on OK final <= initial, the terms sum
+// to the cost, the chosen bump within its bounds, finite points.
+void op_bump_optimize(Input& in, Ctx& c) {
+  cyc_ringed_jet a, b;
+  fill_jet(in, a);
+  fill_jet(in, b);
+  cyc_bump_objective o;
+  cyc_bump_objective_init(&o);
+  cyc_bump_options p;
+  cyc_bump_options_init(&p);
+  o.nodes = in.rarely() ? in.range(-2, 2000) : in.range(4, 32);
+  o.deviance = in.flag() ? 1.0 : in.moderate();
+  cyc_blend_obstacle ob;
+  in.fill(ob.center, 3, 1);
+  ob.radius = in.flag() ? std::abs(in.moderate()) : in.moderate();
+  o.obstacle_count = in.rarely() ? in.range(-1, 2) : in.range(0, 1);
+  const bool null_obstacles = in.rarely();
+  o.obstacles = null_obstacles ? nullptr : &ob;
+  if (o.obstacle_count > 1 && o.obstacles) o.obstacle_count = 1;  // one sphere in memory
+  o.clearance = in.flag() ? 0.0 : in.moderate();
+  p.max_iterations = in.range(0, 8);
+  p.free_tau = in.flag() ? 1 : 0;
+  if (in.rarely()) p.tau_min = in.moderate();
+  if (in.rarely()) p.w_bound = in.moderate();
+  cyc_surface* pieces[2] = {kSentinel, kSentinel};
+  int count = -7;
+  cyc_directrix_bump chosen;
+  chosen.tau = -7;
+  cyc_optimize_summary sum;
+  sum.iterations = -7;
+  FZ_LOG("cyc_optimize_pcurve_bump nodes %d obstacles %d (null %d) iters %d", o.nodes,
+         o.obstacle_count, int(null_obstacles), p.max_iterations);
+  const int s = cyc_optimize_pcurve_bump(c.ctx, &a, &b, nullptr, nullptr, &o, &p, pieces, &count,
+                                         &chosen, &sum);
+  c.check("cyc_optimize_pcurve_bump", s);
+  if (o.obstacle_count > 0 && null_obstacles)
+    FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "NULL obstacles give %s", cyc_status_name(s));
+  else if (o.nodes < 4 || o.nodes > 1024 || o.obstacle_count < 0)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT || s == CYC_E_NOT_FINITE, "nodes %d gives %s", o.nodes,
+             cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(pieces[0] == kSentinel && count == -7 && chosen.tau == -7 && sum.iterations == -7,
+             "bump optimizer: outputs written on error");
+    return;
+  }
+  FZ_CHECK(sum.final_cost <= sum.initial_cost, "final %g > initial %g", sum.final_cost,
+           sum.initial_cost);
+  FZ_CHECK(std::abs(sum.fairness + sum.obstacles - sum.final_cost) <=
+               1e-12 * (1 + std::abs(sum.final_cost)),
+           "terms do not sum to the cost");
+  FZ_CHECK(count == 1 || count == 2, "count %d", count);
+  FZ_CHECK(chosen.tau > 0 && chosen.tau < 1, "chosen tau %g", chosen.tau);
+  for (int k = 0; k < count; ++k) {
+    check_points(c, pieces[k], nullptr, "cyc_optimize_pcurve_bump");
+    cyc_surface_destroy(c.ctx, pieces[k]);
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -490,8 +551,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const int nops = in.range(1, 8);
   for (int i = 0; i < nops; ++i) {
     // One byte: odd = blend (the old flag), 2 mod 8 = the (d, n, rho)
-    // creators, 4 mod 8 = the bumped blend, other even values = create
-    // (old seeds keep their meaning).
+    // creators, 4 mod 8 = the bumped blend, 6 mod 8 = its optimizer, other
+    // even values = create (old seeds keep their meaning).
     const int op = in.range(0, 255);
     if (op % 2 == 1)
       op_blend(in, c);
@@ -499,6 +560,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       op_dnr(in, c);
     else if (op % 8 == 4)
       op_bump(in, c);
+    else if (op % 8 == 6)
+      op_bump_optimize(in, c);
     else
       op_create(in, c);
   }

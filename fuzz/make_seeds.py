@@ -2023,6 +2023,26 @@ class RingedEncoder(Encoder):
             if blend_tau != "same":
                 self.range(1, 15, int(blend_tau * 16))
 
+    def bump_optimize(self, a, b, nodes=16, obstacle=None, iters=5, free_tau=True):
+        """op_bump_optimize; obstacle (center, radius) or None."""
+        self.range(0, 255, 6)  # op_bump_optimize
+        self.jet(a)
+        self.jet(b)
+        self.rarely(False)
+        self.range(4, 32, nodes)
+        self.flag(True)  # deviance weight 1
+        self.fill(obstacle[0] if obstacle else (0, 0, 0), 1)
+        self.flag(False)
+        self.moderate(obstacle[1] if obstacle else 0)
+        self.rarely(False)
+        self.range(0, 1, 1 if obstacle else 0)
+        self.rarely(False)
+        self.flag(True)  # clearance 0
+        self.range(0, 8, iters)
+        self.flag(free_tau)
+        self.rarely(False)
+        self.rarely(False)
+
 
 def ringed_seeds():
     ex41_a = {"d": (-4, -3, 1), "dd": (2, 4, 3), "n": (1, 1, 1), "dn": (0, 1, 1),
@@ -2074,6 +2094,13 @@ def ringed_seeds():
         lambda e: e.bump(ex41_a, ex41_b, w=(1, 2, 0.5), tau=0.25, kind=1, blend_tau="same"),
         lambda e: e.bump(ex41_a, ex41_b, w=(1, 2, 0.5), tau=0.25, kind=1, blend_tau=0.5),
         lambda e: e.bump(ex41_a, ex41_b, null_bump=True, blend_tau=0.5),
+    ]).data()
+    # §5.a: the bump optimizer on Example 4.1 (deviance only; with a sphere
+    # near the middle circle; tau fixed).
+    seeds["seed-bump-optimize"] = RingedEncoder([
+        lambda e: e.bump_optimize(ex41_a, ex41_b),
+        lambda e: e.bump_optimize(ex41_a, ex41_b, obstacle=((-2, -1, 1.25), 0.5), iters=8),
+        lambda e: e.bump_optimize(ex41_a, ex41_b, nodes=8, free_tau=False),
     ]).data()
     seeds["seed-create"] = RingedEncoder([
         lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("point", (0, 0, 1)),

@@ -292,3 +292,66 @@ TEST(Optimizer, RegressionObjectiveOverflowIsNotDependentPlanes) {
             CYC_E_NUMERICAL_OVERFLOW);
   EXPECT_EQ(X, reinterpret_cast<cyc_surface*>(&o));
 }
+
+// Seed 001 §5.a through the C ABI: Example 4.1's blend made "more normal"
+// by a bump chosen by Ceres; the summary's terms sum to the cost, the
+// chosen bump rebuilds the same blend bit for bit, errors write nothing.
+TEST(Optimizer, PCurveBumpMoreNormalThroughTheCApi) {
+  Fixture c;
+  ASSERT_EQ(cyc_context_create(nullptr, &c.ctx), CYC_OK);
+  cyc_ringed_jet a{}, b{};
+  const double d0[3] = {-4, -3, 1}, dd0[3] = {2, 4, 3}, n0[3] = {1, 1, 1}, dn[3] = {0, 1, 1};
+  const double dd1[3] = {3, 1, 1}, n1[3] = {4, 0, 0};
+  std::memcpy(a.d, d0, sizeof d0);
+  std::memcpy(a.dd, dd0, sizeof dd0);
+  std::memcpy(a.n, n0, sizeof n0);
+  std::memcpy(a.dn, dn, sizeof dn);
+  a.rho = 1.25;
+  a.drho = 0.5;
+  std::memcpy(b.dd, dd1, sizeof dd1);
+  std::memcpy(b.n, n1, sizeof n1);
+  std::memcpy(b.dn, dn, sizeof dn);
+  b.rho = 2;
+  b.drho = 1;
+  cyc_surface* pieces[2] = {nullptr, nullptr};
+  int count = -7;
+  cyc_directrix_bump chosen;
+  chosen.tau = -7;
+  cyc_optimize_summary sum;
+  sum.iterations = -7;
+  cyc_bump_objective o;
+  cyc_bump_objective_init(&o);
+  EXPECT_EQ(o.deviance, 1.0);
+  EXPECT_EQ(o.nodes, 64);
+  o.nodes = 1;
+  EXPECT_EQ(cyc_optimize_pcurve_bump(c.ctx, &a, &b, nullptr, nullptr, &o, nullptr, pieces, &count,
+                                     &chosen, &sum),
+            CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(cyc_optimize_pcurve_bump(c.ctx, &a, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                     pieces, &count, &chosen, &sum),
+            CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(count, -7);
+  EXPECT_EQ(chosen.tau, -7);
+  EXPECT_EQ(sum.iterations, -7);
+  EXPECT_EQ(pieces[0], nullptr);
+  ASSERT_EQ(cyc_optimize_pcurve_bump(c.ctx, &a, &b, nullptr, nullptr, nullptr, nullptr, pieces,
+                                     &count, &chosen, &sum),
+            CYC_OK);
+  ASSERT_EQ(count, 1);
+  EXPECT_LT(sum.final_cost, sum.initial_cost);
+  EXPECT_NEAR(sum.fairness + sum.obstacles, sum.final_cost, 1e-15);
+  EXPECT_GE(chosen.tau, 0.2);
+  EXPECT_LE(chosen.tau, 0.8);
+  double dev = 0;
+  ASSERT_EQ(cyc_surface_normal_deviance(c.ctx, pieces[0], &dev), CYC_OK);
+  EXPECT_NEAR(dev, 2 * sum.final_cost, 1e-3);
+  cyc_surface* again[2] = {nullptr, nullptr};
+  int n2 = 0;
+  ASSERT_EQ(cyc_blend_ringed_pcurve_bump(c.ctx, &a, &b, nullptr, &chosen, again, &n2), CYC_OK);
+  double x[3], y[3];
+  ASSERT_EQ(cyc_surface_eval(c.ctx, pieces[0], 0.4, 0.3, x, nullptr, nullptr, nullptr), CYC_OK);
+  ASSERT_EQ(cyc_surface_eval(c.ctx, again[0], 0.4, 0.3, y, nullptr, nullptr, nullptr), CYC_OK);
+  EXPECT_EQ(std::memcmp(x, y, sizeof x), 0);
+  cyc_surface_destroy(c.ctx, pieces[0]);
+  cyc_surface_destroy(c.ctx, again[0]);
+}

@@ -11,6 +11,7 @@
 #include "cyclide/blend.hpp"
 #include "cyclide/contour.hpp"
 #include "cyclide/pcurve.hpp"
+#include "seed001_data.hpp"
 #include "cyclide/ringed.hpp"
 
 using namespace cyclide;
@@ -611,37 +612,7 @@ TEST(ContourCurves, Equation72PythagoreanOrientation) {
             Status::invalid_argument);
 }
 
-namespace {
-
-using T2 = Taylor<double, 2>;
-
-T2 series(double v, double d1, double d2) {
-  T2 s;
-  s.c[0] = v;
-  s.c[1] = d1;
-  s.c[2] = d2 / 2;
-  return s;
-}
-
-// The Hermite data (37) of a canal surface (spine m, radius r) read as a
-// ringed surface by eq. (1), from the values and first two derivatives.
-RingedJet canal_jet(const Vec3d& m, const Vec3d& dm, const Vec3d& ddm, double r, double dr,
-                    double ddr) {
-  Vec3<T2> s;
-  for (int j = 0; j < 3; ++j) s[j] = series(m[j], dm[j], ddm[j]);
-  const T2 r2 = series(r * r, 2 * r * dr, 2 * (dr * dr + r * ddr));
-  const RingedData R = ringed_from_canal(s, r2);
-  RingedJet J;
-  J.d = R.c;
-  J.dd = R.dc;
-  J.n = R.n;
-  J.dn = R.dn;
-  J.rho = std::sqrt(R.rho2);
-  J.drho = R.rho_rho_prime / J.rho;
-  return J;
-}
-
-}  // namespace
+using cyclide_test::canal_jet;
 
 // Example 5.2, eqs. (58)-(61): the canal surfaces (59) at t = 1 and (60) at
 // t = 0 read as ringed surfaces (1), their §4 blend (Ferguson cubics and

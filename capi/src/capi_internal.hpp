@@ -12,6 +12,7 @@
 
 #include "cyclide/cyclide.h"
 #include "cyclide/blend.hpp"
+#include "cyclide/pcurve.hpp"
 #include "cyclide/surface.hpp"
 
 using cyclide::RationalCurve;
@@ -212,6 +213,38 @@ inline Outcome mobius_from(const char* fn, const cyc_mobius* f, Mobius& m) {
   return ok();
 }
 
+// Seed 001's Hermite data of a join.
+inline RingedJet jet_of(const cyc_ringed_jet& j) {
+  RingedJet J;
+  J.d = vec(j.d);
+  J.dd = vec(j.dd);
+  J.n = vec(j.n);
+  J.dn = vec(j.dn);
+  J.rho = j.rho;
+  J.drho = j.drho;
+  return J;
+}
+
+// The P-curve blend's options and bump (either may be NULL: defaults).
+inline Outcome pcurve_blend_options_of(const char* fn, const cyc_pcurve_blend_options* options,
+                                       const cyc_directrix_bump* bump, RingedBlendOptions& o) {
+  if (options) {
+    o.sign = options->sign;
+    o.tau = options->tau;
+    o.v = vec(options->v);
+    if (o.sign != 1 && o.sign != -1)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: sign = %d is not +1 or -1", fn, o.sign);
+  }
+  if (bump) {
+    if (bump->kind != CYC_BUMP_SINGLE && bump->kind != CYC_BUMP_TWO_PIECE)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown bump kind %d", fn, bump->kind);
+    o.bump.w = vec(bump->w);
+    o.bump.tau = bump->tau;
+    o.bump.kind = BumpKind(bump->kind);
+  }
+  return ok();
+}
+
 // Hand a new curve to the caller.
 template <class H, class T>
 Outcome emit(const char* fn, cyc_context* ctx, H** out, const T& value) {
@@ -222,6 +255,20 @@ Outcome emit(const char* fn, cyc_context* ctx, H** out, const T& value) {
   else
     h->surface = value;
   *out = h;
+  return ok();
+}
+
+// Hand n (1 or 2) blend pieces to the caller: all or nothing.
+inline Outcome emit_pieces(const char* fn, cyc_context* ctx, const Surface* S, int n,
+                           cyc_surface** pieces, int* count) {
+  cyc_surface* h[2] = {nullptr, nullptr};
+  for (int k = 0; k < n; ++k)
+    if (Outcome e = emit(fn, ctx, &h[k], S[k]); e.status) {
+      for (int j = 0; j < k; ++j) release(h[j]);
+      return e;
+    }
+  for (int k = 0; k < n; ++k) pieces[k] = h[k];
+  *count = n;
   return ok();
 }
 

@@ -12,6 +12,7 @@
 
 #if CYCLIDE_HAVE_CERES
 #include "optim/blend_optimizer.hpp"
+#include "optim/bump_optimizer.hpp"
 #include "optim/closest_point.hpp"
 #endif
 
@@ -172,6 +173,116 @@ int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
 #else
     (void)kind; (void)K; (void)t0; (void)t1; (void)objective; (void)options;
     (void)start_out; (void)end_out; (void)summary;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
+  });
+}
+
+void cyc_bump_objective_init(cyc_bump_objective* o) {
+  if (!o) return;
+  std::memset(o, 0, sizeof *o);
+#if CYCLIDE_HAVE_CERES
+  const optim::BumpObjective d;
+  o->deviance = d.deviance;
+  o->clearance = d.clearance;
+  o->obstacle_weight = d.obstacle_weight;
+  o->nodes = d.nodes;
+#else
+  o->deviance = 1.0;
+  o->obstacle_weight = 1.0;
+  o->nodes = 64;
+#endif
+}
+
+void cyc_bump_options_init(cyc_bump_options* p) {
+  if (!p) return;
+  std::memset(p, 0, sizeof *p);
+  p->w_bound = 2.0;
+  p->tau_min = 0.2;
+  p->tau_max = 0.8;
+  p->free_tau = 1;
+  p->max_iterations = 50;
+  p->function_tolerance = 1e-10;
+  p->gradient_tolerance = 1e-12;
+  p->parameter_tolerance = 1e-10;
+}
+
+int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a, const cyc_ringed_jet* b,
+                             const cyc_pcurve_blend_options* blend,
+                             const cyc_directrix_bump* start, const cyc_bump_objective* objective,
+                             const cyc_bump_options* options, cyc_surface** pieces, int* count,
+                             cyc_directrix_bump* chosen, cyc_optimize_summary* summary) {
+  const char* fn = "cyc_optimize_pcurve_bump";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(a);
+    REQUIRE(b);
+    REQUIRE(pieces);
+    REQUIRE(count);
+#if CYCLIDE_HAVE_CERES
+    RingedBlendOptions B;
+    if (Outcome e = pcurve_blend_options_of(fn, blend, start, B); e.status) return e;
+    cyc_bump_objective o;
+    cyc_bump_options p;
+    cyc_bump_objective_init(&o);
+    cyc_bump_options_init(&p);
+    if (objective) o = *objective;
+    if (options) p = *options;
+    if (o.obstacle_count < 0)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: negative obstacle count", fn);
+    if (o.obstacle_count > 0 && !o.obstacles)
+      return fail(CYC_E_NULL_ARGUMENT, "%s: NULL obstacles with a positive count", fn);
+    std::vector<optim::SphereObstacle> obstacles(size_t(o.obstacle_count));
+    for (int q = 0; q < o.obstacle_count; ++q) {
+      obstacles[size_t(q)].center = vec(o.obstacles[q].center);
+      obstacles[size_t(q)].radius = o.obstacles[q].radius;
+    }
+    optim::BumpObjective O;
+    O.deviance = o.deviance;
+    O.obstacles = obstacles.data();
+    O.obstacle_count = o.obstacle_count;
+    O.clearance = o.clearance;
+    O.obstacle_weight = o.obstacle_weight;
+    O.nodes = o.nodes;
+    optim::BumpOptions P;
+    P.w_bound = p.w_bound;
+    P.tau_min = p.tau_min;
+    P.tau_max = p.tau_max;
+    P.free_tau = p.free_tau != 0;
+    P.max_iterations = p.max_iterations;
+    P.function_tolerance = p.function_tolerance;
+    P.gradient_tolerance = p.gradient_tolerance;
+    P.parameter_tolerance = p.parameter_tolerance;
+    Surface S[2];
+    int n = 0;
+    DirectrixBump D;
+    optim::BlendSummary R;
+    if (Status st = optim::optimize_pcurve_bump(jet_of(*a), jet_of(*b), B, O, P, S, n, D, R);
+        st != Status::ok)
+      return from_core(fn, st);
+    if (Outcome e = emit_pieces(fn, ctx, S, n, pieces, count); e.status) return e;
+    if (chosen) {
+      cyc_directrix_bump c;
+      put3(c.w, D.w);
+      c.tau = D.tau;
+      c.kind = int(D.kind);
+      *chosen = c;
+    }
+    if (summary) {
+      cyc_optimize_summary m;
+      std::memset(&m, 0, sizeof m);
+      m.initial_cost = R.initial_cost;
+      m.final_cost = R.final_cost;
+      m.iterations = R.iterations;
+      m.seconds = R.seconds;
+      m.termination = int(R.termination);
+      m.fairness = R.fairness;
+      m.obstacles = R.obstacles;
+      m.length_scale = R.length_scale;
+      *summary = m;
+    }
+    return ok();
+#else
+    (void)blend; (void)start; (void)objective; (void)options; (void)chosen; (void)summary;
     return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
 #endif
   });

@@ -13,17 +13,6 @@ using namespace cyclide::capi;
 
 namespace {
 
-RingedJet jet_of(const cyc_ringed_jet& j) {
-  RingedJet J;
-  J.d = vec(j.d);
-  J.dd = vec(j.dd);
-  J.n = vec(j.n);
-  J.dn = vec(j.dn);
-  J.rho = j.rho;
-  J.drho = j.drho;
-  return J;
-}
-
 // rho = rho_num / rho_den from power-form coefficient arrays (rho_den NULL:
 // 1).
 Outcome radius_from(const char* fn, int num_degree, const double* num, int den_degree,
@@ -205,20 +194,7 @@ int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
     REQUIRE(pieces);
     REQUIRE(count);
     RingedBlendOptions o;
-    if (options) {
-      o.sign = options->sign;
-      o.tau = options->tau;
-      o.v = vec(options->v);
-      if (o.sign != 1 && o.sign != -1)
-        return fail(CYC_E_INVALID_ARGUMENT, "%s: sign = %d is not +1 or -1", fn, o.sign);
-    }
-    if (bump) {
-      if (bump->kind != CYC_BUMP_SINGLE && bump->kind != CYC_BUMP_TWO_PIECE)
-        return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown bump kind %d", fn, bump->kind);
-      o.bump.w = vec(bump->w);
-      o.bump.tau = bump->tau;
-      o.bump.kind = BumpKind(bump->kind);
-    }
+    if (Outcome e = pcurve_blend_options_of(fn, options, bump, o); e.status) return e;
     Surface S[2];
     int n = 0;
     double bad_u = NAN;  // set where a piece's domain scan fails
@@ -233,14 +209,7 @@ int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
                     "and a P-biarc split at different tau", fn);
       return located(s) && std::isfinite(bad_u) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
     }
-    cyc_surface* h[2] = {nullptr, nullptr};
-    for (int k = 0; k < n; ++k)
-      if (Outcome e = emit(fn, ctx, &h[k], S[k]); e.status) {
-        cyc_surface_destroy(ctx, h[0]);
-        return e;
-      }
-    for (int k = 0; k < n; ++k) pieces[k] = h[k];
-    *count = n;
+    if (Outcome e = emit_pieces(fn, ctx, S, n, pieces, count); e.status) return e;
     return ok();
   });
 }

@@ -16,6 +16,7 @@
 
 #include "cyclide/curve.hpp"
 #include "cyclide/hermite.hpp"
+#include "cyclide/ringed.hpp"
 #include "cyclide/surface.hpp"
 
 namespace cyclide {
@@ -185,6 +186,8 @@ struct RingedJet {
 // The jet of a circle-family surface at u: d = circle center, n = the
 // frame's axis (with its length), rho = radius (rho' = (rho rho')/rho).
 Status ringed_jet(const Surface& S, double u, RingedJet& out);
+// The same from ringed data (rho^2 > 0 assumed).
+RingedJet ringed_jet_from(const RingedData& R);
 
 // The two-surface blend of §4 on t in [0, 1]: (d, n.v, rho) by a Ferguson
 // cubic (38), the projection of n onto the plane perpendicular to v by a

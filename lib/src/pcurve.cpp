@@ -261,6 +261,11 @@ Status ringed_jet(const Surface& S, double u, RingedJet& out) {
   RingedData R;
   if (Status st = S.ringed(u, R); st != Status::ok) return st;
   if (!(R.rho2 > 0)) return Status::singular_point;
+  out = ringed_jet_from(R);
+  return Status::ok;
+}
+
+RingedJet ringed_jet_from(const RingedData& R) {
   RingedJet J;
   J.d = R.c;
   J.dd = R.dc;
@@ -268,8 +273,7 @@ Status ringed_jet(const Surface& S, double u, RingedJet& out) {
   J.dn = R.dn;
   J.rho = std::sqrt(R.rho2);
   J.drho = R.rho_rho_prime / J.rho;
-  out = J;
-  return Status::ok;
+  return J;
 }
 
 namespace {

@@ -932,6 +932,59 @@ CYC_API int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* 
                                cyc_blend_end* start_out, cyc_blend_end* end_out,
                                cyc_optimize_summary* summary);
 
+/** Seed 001 §5.a: the objective of cyc_optimize_pcurve_bump, a weighted sum
+ *  of the deviance (58) (the integral of sin^2 angle(n, d*') by the midpoint
+ *  rule on `nodes` nodes) and, per obstacle, the mean over the nodes of the
+ *  squared hinge max(0, (radius + clearance - (|d*(t) - center| - rho(t))) / L)
+ *  (eq. (54) with a margin; L = the ends' distance plus their radii). */
+typedef struct cyc_bump_objective {
+  double deviance; /* weight, default 1 */
+  const cyc_blend_obstacle* obstacles;
+  int obstacle_count;
+  double clearance;       /* >= 0, default 0 */
+  double obstacle_weight; /* default 1 */
+  int nodes;              /* 4..1024, default 64 */
+} cyc_bump_objective;
+
+/** Bounds and solver options of cyc_optimize_pcurve_bump. */
+typedef struct cyc_bump_options {
+  double w_bound;             /* |w_j| <= w_bound L, default 2 */
+  double tau_min, tau_max;    /* tau's box inside (0, 1), default [0.2, 0.8] */
+  int free_tau;               /* 1 (default): tau is optimized; 0: kept */
+  int max_iterations;         /* >= 0, default 50 */
+  double function_tolerance;  /* Ceres', default 1e-10 */
+  double gradient_tolerance;  /* default 1e-12 */
+  double parameter_tolerance; /* default 1e-10 */
+} cyc_bump_options;
+
+/** The defaults above (usable without the optimizer tier). NULL is ignored. */
+CYC_API void cyc_bump_objective_init(cyc_bump_objective* objective);
+CYC_API void cyc_bump_options_init(cyc_bump_options* options);
+
+/** Ceres chooses the bump (w, and tau if free) of the P-curve blend of a and
+ *  b (cyc_blend_ringed_pcurve_bump) starting from `start` (NULL: w = 0, tau
+ *  = 1/2, single; its kind is kept): the "more normal" blend of Example 5.2
+ *  and/or clearing spherical obstacles. d* and d*' are exact in (w, tau)
+ *  (only the directrix moves), so the derivatives are Jets (autodiff).
+ *  Writes the blend's pieces (1 or 2) and *count, the chosen bump (may be
+ *  NULL) and the summary (may be NULL; fairness = the final deviance term,
+ *  obstacles = the obstacle term). final_cost <= initial_cost always (the
+ *  start is returned, termination CYC_OPTIMIZE_REVERTED, if the optimum
+ *  is worse or no valid blend). Statuses: CYC_E_INVALID_ARGUMENT (weights
+ *  < 0, nodes, bounds, counts, a two-piece bump with a P-biarc and free
+ *  tau), CYC_E_NOT_FINITE, CYC_E_NULL_ARGUMENT, CYC_E_SINGULAR_POINT (d*' =
+ *  0 at a node of the start), those of cyc_blend_ringed_pcurve_bump.
+ *  Optimizer tier: allocates; CYC_E_UNSUPPORTED without Ceres. Nothing is
+ *  written on error. */
+CYC_API int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
+                                     const cyc_ringed_jet* b,
+                                     const cyc_pcurve_blend_options* blend,
+                                     const cyc_directrix_bump* start,
+                                     const cyc_bump_objective* objective,
+                                     const cyc_bump_options* options, cyc_surface** pieces,
+                                     int* count, cyc_directrix_bump* chosen,
+                                     cyc_optimize_summary* summary);
+
 #ifdef __cplusplus
 }
 #endif
