@@ -122,8 +122,10 @@ int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x_degree,
     REQUIRE(x);
     REQUIRE(out);
     if (x_degree < 0) return fail(CYC_E_INVALID_ARGUMENT, "%s: x_degree < 0", fn);
-    if (x_degree > kMaxCurveDegree)
-      return fail(CYC_E_DEGREE_TOO_HIGH, "%s: x_degree above %d", fn, kMaxCurveDegree);
+    // Checked before x is read: n = (8) has degree 2 x_degree.
+    if (2 * x_degree > kMaxCurveDegree)
+      return fail(CYC_E_DEGREE_TOO_HIGH, "%s: x_degree %d: the P-curve's degree %d exceeds %d",
+                  fn, x_degree, 2 * x_degree, kMaxCurveDegree);
     CurvePoly rn, rd;
     Mobius m;
     if (Outcome o = radius_and_circle(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, f,

@@ -94,12 +94,13 @@ Status contour_points(const Surface& S, double u, const Vec3d& v, ContourPoints&
   for (double& x : q) x /= qmax;
   int deg = 4;
   while (deg > 0 && std::abs(q[deg]) <= 1e-14) --deg;
-  double z[4], theta[4];
+  double z[4], theta[5];
   const int r = real_roots_quartic(q, deg, z);
   int m = 0;
   for (int i = 0; i < r; ++i) theta[m++] = 2 * std::atan(z[i]);
   if (deg < 4) theta[m++] = 3.141592653589793;  // z = infinity is a root
-  std::sort(theta, theta + m);
+  for (int i = 1; i < m; ++i)  // insertion sort (at most 4 angles)
+    for (int j = i; j > 0 && theta[j] < theta[j - 1]; --j) std::swap(theta[j], theta[j - 1]);
   for (int i = 0; i < m; ++i) {
     if (i > 0 && theta[i] - theta[i - 1] < 1e-12) continue;  // a double root
     const Vec3d x = R.c + rho * (std::cos(theta[i]) * e1 + std::sin(theta[i]) * e2);
