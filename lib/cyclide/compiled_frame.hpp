@@ -49,27 +49,15 @@ struct Lanes4 {
   }
 };
 
-// One Horner step r = r t + c, multiply and add each rounded: the step of
-// every kernel variant without FMA, and of CompiledFrame::eval (SPEC §1b).
-// A variant with FMA passes its own Ops whose step is one explicit fused
-// multiply-add (evaluator.cpp): never a contraction the compiler chooses,
-// so all paths of one variant still round alike.
-struct MulAdd {
-  static CYC_ALWAYS_INLINE void step(Lane4& r, const Lane4& t, const Lane4& c) {
-    r = r * t + c;
-  }
-};
-
 // r[j] = (d/du)^j P(t) / j!, j = 0..M, at t (u = mid + half t): Horner
 // with derivatives (synthetic division), then d/du = inv_half d/dt.
-template <int M, class Ops = MulAdd>
+template <int M>
 CYC_ALWAYS_INLINE void horner4(const Lanes4& P, double t, double inv_half, Lane4 (&r)[M + 1]) {
-  const Lane4 tv = {t, t, t, t};
   r[0] = P.c[P.deg];
   for (int j = 1; j <= M; ++j) r[j] = Lane4{0, 0, 0, 0};
   for (int k = P.deg - 1; k >= 0; --k) {
-    for (int j = M; j >= 1; --j) Ops::step(r[j], tv, r[j - 1]);
-    Ops::step(r[0], tv, P.c[k]);
+    for (int j = M; j >= 1; --j) r[j] = r[j] * t + r[j - 1];
+    r[0] = r[0] * t + P.c[k];
   }
   double f = inv_half;
   for (int j = 1; j <= M; ++j, f *= inv_half) r[j] *= f;
@@ -88,21 +76,10 @@ CYC_ALWAYS_INLINE void quotient4(const Lane4 (&r)[M + 1], double inv_w, Lane4 (&
 struct CompiledFrame {
   bool valid = false;
   bool axis_is_spine_derivative = false;  // PRCS: a = do/du; PRRS: a = A(t)
-  // The weight of a (PRRS) / p is the constant 1 (polynomial inputs): the
-  // quotient by w is skipped. Same values (x / 1 and x * 1 are exact); a
-  // u-derivative r_j - q_0 * 0 is r_j except for the sign of a zero.
-  bool a_unit_weight = false, p_unit_weight = false;
   double mid = 0.0, inv_half = 1.0;
   double u0 = 0.0, u1 = 0.0;  // trusted interval (the domain)
   double det_floor = 0.0;     // |D(t)| below this: not trusted at u
   Lanes4 o, a, p;             // homogeneous o, a (PRRS only), p
-  // Surface::eval's fast path, stored at creation (surface.cpp,
-  // compile_frames) so that a call gathers nothing: f's four constants
-  // (alpha, beta, gamma, delta) and the chosen variant's frame_eval kernels
-  // offset by the surface's canal flag (index by du, dv, normal only). Null
-  // when f varies in u or the frame was not compiled.
-  double f_const[4] = {0, 0, 0, 0};
-  const FrameEvalFn* frame_eval = nullptr;
 
   // The frame (o, a, p) at u to order N; false if not trusted at u.
   template <int N>
@@ -124,12 +101,11 @@ struct CompiledFrame {
   // and 1/radius if RADIUS. False where the compiled frame is not trusted
   // or a condition of Surface::check_frame fails: the reference path then
   // decides (and reports the status).
-  // Ops: the Horner step (see MulAdd).
-  template <bool WITH_DU, bool RADIUS = true, class Ops = MulAdd>
+  template <bool WITH_DU, bool RADIUS = true>
   bool row(double u, const double (&f4)[4], CircleRow& out) const {
     constexpr int N = WITH_DU ? 1 : 0;
     Lane4 so[N + 2], sa[N + 1], sp[N + 1];
-    if (!series<N, Ops>(u, so, sa, sp)) return false;
+    if (!series<N>(u, so, sa, sp)) return false;
     // check_frame's bound: every frame value (and u-derivative) at most
     // kMaxFrameMagnitude in magnitude; NaN fails too. (Lane 3 holds w/w = 1
     // and its derivatives 0, so it passes.)
@@ -187,9 +163,8 @@ struct CompiledFrame {
   }
 
   // Normalized u-series of o, a, p to order N at u (so has room for the
-  // PRCS spine to order N+1); false if not trusted at u. Ops: the Horner
-  // step (see MulAdd).
-  template <int N, class Ops = MulAdd>
+  // PRCS spine to order N+1); false if not trusted at u.
+  template <int N>
   bool series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1], Lane4 (&sp)[N + 1]) const;
 
  private:
@@ -203,7 +178,7 @@ struct CompiledFrame {
   }
 };
 
-template <int N, class Ops>
+template <int N>
 bool CompiledFrame::series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1],
                          Lane4 (&sp)[N + 1]) const {
   if (!valid || !(u >= u0 && u <= u1)) return false;
@@ -211,29 +186,23 @@ bool CompiledFrame::series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1],
   if (axis_is_spine_derivative) {
     // o to order N+1; a = o' (normalized coefficients: a_j = (j+1) o_{j+1}).
     Lane4 r[N + 2];
-    horner4<N + 1, Ops>(o, t, inv_half, r);
+    horner4<N + 1>(o, t, inv_half, r);
     if (!(std::abs(r[0][3]) > det_floor)) return false;
     quotient4<N + 1>(r, 1.0 / r[0][3], so);
     for (int j = 0; j <= N; ++j) sa[j] = double(j + 1) * so[j + 1];
   } else {
     Lane4 r[N + 1], ra[N + 1];
-    horner4<N, Ops>(o, t, inv_half, r);
+    horner4<N>(o, t, inv_half, r);
     if (!(std::abs(r[0][3]) > det_floor)) return false;
-    horner4<N, Ops>(a, t, inv_half, ra);
+    horner4<N>(a, t, inv_half, ra);
     Lane4 q[N + 1];
     quotient4<N>(r, 1.0 / r[0][3], q);
     for (int j = 0; j <= N; ++j) so[j] = q[j];
-    if (a_unit_weight)
-      for (int j = 0; j <= N; ++j) sa[j] = ra[j];
-    else
-      quotient4<N>(ra, 1.0 / ra[0][3], sa);
+    quotient4<N>(ra, 1.0 / ra[0][3], sa);
   }
   Lane4 rp[N + 1];
-  horner4<N, Ops>(p, t, inv_half, rp);
-  if (p_unit_weight)
-    for (int j = 0; j <= N; ++j) sp[j] = rp[j];
-  else
-    quotient4<N>(rp, 1.0 / rp[0][3], sp);
+  horner4<N>(p, t, inv_half, rp);
+  quotient4<N>(rp, 1.0 / rp[0][3], sp);
   return true;
 }
 

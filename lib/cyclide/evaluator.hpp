@@ -16,9 +16,9 @@
 // kChunk values of v into structure-of-arrays scratch with no control flow
 // (the two cases of v are exact blends), so the compiler vectorizes the loop;
 // each chunk is then stored to the caller's strided buffers. Everything is
-// specialized at compile time on what is wanted, and compiled three times
-// (evaluator.cpp): for the baseline x86-64, for AVX2 and for AVX2 with an
-// explicit FMA Horner step, chosen once at run time from the CPU (SPEC §1b).
+// specialized at compile time on what is wanted, and compiled twice
+// (evaluator.cpp): for the baseline x86-64 and for AVX2, chosen once at
+// run time from the CPU (SPEC §1b).
 #pragma once
 
 #include <cmath>
@@ -210,11 +210,7 @@ constexpr int kGridBlockRows = 16;
 
 // The kernels of one instruction set.
 struct Kernels {
-  const char* isa;  // "x86-64-v3 (AVX2, FMA Horner)", "x86-64-v3 (AVX2)" or "baseline"
-  // The compiled frames' Horner steps are fused multiply-adds: the results
-  // differ from the other variants' by rounding (all paths of this variant
-  // still agree bit for bit).
-  bool fused;
+  const char* isa;  // "x86-64-v3 (AVX2)" or "baseline"
   GridBlockFn grid[16];
   PointFn point[16];
   FramePointFn frame_point[16];
@@ -225,11 +221,9 @@ struct Kernels {
 // The kernels for this CPU, chosen once.
 const Kernels& kernels();
 // Each variant by name (for tests and benchmarks): the baseline always, the
-// AVX2 one only where the CPU has it, the AVX2+FMA one only where it has
-// both (else null). kernels() prefers AVX2+FMA, then AVX2.
+// AVX2 one only where the CPU has it (else null).
 const Kernels& baseline_kernels();
 const Kernels* avx2_kernels();
-const Kernels* avx2_fma_kernels();
 
 }  // namespace v0
 }  // namespace cyclide

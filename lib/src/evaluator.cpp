@@ -1,16 +1,13 @@
-// The evaluator's kernels (evaluator.hpp), compiled for three instruction
-// sets: the x86-64 baseline (SSE2), AVX2, and AVX2 with FMA, chosen once
-// from the CPU.
+// The evaluator's kernels (evaluator.hpp), compiled for two instruction
+// sets: the x86-64 baseline (SSE2) and AVX2, chosen once from the CPU.
 //
 // Each kernel is a template over the wanted outputs. The exported variants
 // are thin wrappers marked `flatten`, so the whole kernel is inlined into
 // each wrapper and compiled with that wrapper's target; no code compiled for
 // AVX2 is ever shared (as an out-of-line template instance) with the
 // baseline path. The core is compiled with -ffp-contract=off: vector lanes
-// round exactly like scalar operations, so the grid and single-point paths
-// give identical bits (tested), and so do the baseline and AVX2 variants.
-// The AVX2+FMA variant's only fused operation is its explicit Horner step
-// (FusedMulAdd below), the same in all of its paths.
+// round exactly like scalar operations, so both variants, and the grid and
+// single-point paths, give identical bits (tested).
 #include "cyclide/evaluator.hpp"
 
 #include "cyclide/compiled_frame.hpp"
@@ -21,7 +18,6 @@
 #include <immintrin.h>
 #define CYC_X86_64 1
 #define CYC_AVX2_TARGET __attribute__((flatten, target("avx2")))
-#define CYC_AVX2_FMA_TARGET __attribute__((flatten, target("avx2,fma")))
 #endif
 
 // The vector helpers below return vectors by value; they are always
@@ -190,34 +186,10 @@ std::size_t grid_block(const CircleRow* rows, int nrows, std::size_t first_row,
   return singular;
 }
 
-// circle_parameter (evaluator.hpp) for one v, without a branch: GCC turns
-// the select of the scalar version into a jump on |v| <= 1 (it knows w is
-// 0 or 1 and specializes the arithmetic after it), which random v
-// mispredict half the time: a pipeline flush per miss, ~0.5 per single
-// point with the benchmark's v. Here w comes from the comparison by an
-// integer mask and is then hidden from the optimizer (an empty asm), so
-// the blend arithmetic stays. w is exactly 1.0 or 0.0 as there, and the
-// rest is the same arithmetic, so the bits are the grid's.
-CYC_ALWAYS_INLINE void circle_parameter_1(double v, double& s1, double& s0) {
-  const std::uint64_t mask = std::uint64_t(0) - std::uint64_t(std::abs(v) <= 1.0);
-  const double one = 1.0;
-  std::uint64_t bits;
-  __builtin_memcpy(&bits, &one, sizeof bits);
-  bits &= mask;
-#if defined(__GNUC__)
-  __asm__("" : "+r"(bits));
-#endif
-  double w;
-  __builtin_memcpy(&w, &bits, sizeof w);
-  const double w1 = 1.0 - w;
-  s1 = w * v + w1;
-  s0 = w + w1 / (w1 * v + w);
-}
-
 template <bool DU, bool DV, bool NORMAL, bool CANAL>
 CYC_ALWAYS_INLINE void point(const CircleRow& row, double v, PointResult& P) {
   double s1, s0;
-  circle_parameter_1(v, s1, s0);
+  circle_parameter(v, s1, s0);
   const RotationData& R = row.r;
   const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
   eval_point<DU, DV, NORMAL, CANAL>(R, row.r_u, k, row.inv_radius, s1, s0, P);
@@ -260,7 +232,7 @@ CYC_ALWAYS_INLINE void put3(const Lane4& x, double (&dst)[3]) {
 // through the row), but on (x, y, z, w) vectors. The frame's series already
 // come as vectors; one vector operation replaces three scalar ones, and no
 // CircleRow is stored and loaded again (SPEC §1b).
-template <bool DU, bool DV, bool NORMAL, bool CANAL, class Ops>
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
 CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4], double u,
                                    double v, PointResult& P) {
   constexpr bool need_du = DU || (NORMAL && !CANAL);
@@ -268,7 +240,7 @@ CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4]
   constexpr int N = need_du ? 1 : 0;
   // The row: rotation data at u (CompiledFrame::row).
   Lane4 so[N + 2], sa[N + 1], sp[N + 1];
-  if (!F.series<N, Ops>(u, so, sa, sp) || !CompiledFrame::bounded<N>(so, sa, sp)) return false;
+  if (!F.series<N>(u, so, sa, sp) || !CompiledFrame::bounded<N>(so, sa, sp)) return false;
   const Lane4 o = so[0], a = sa[0], d = sp[0] - so[0];
   const double aa = dot3(a, a), dd = dot3(d, d);
   if (!(aa >= kMinAxisLength * kMinAxisLength) || !(dd > 0)) return false;
@@ -277,7 +249,7 @@ CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4]
   // The point (eval_point): q = W + G a, x = o + r.
   const double alpha = f4[0], beta = f4[1], gamma = f4[2], delta = f4[3];
   double s1, s0;
-  circle_parameter_1(v, s1, s0);
+  circle_parameter(v, s1, s0);
   const double W = alpha * s1 + beta * s0, G = gamma * s1 + delta * s0;
   const double W2 = W * W, G2 = G * G, WG = W * G;
   const double inv = 1.0 / (W2 + G2 * aa);
@@ -327,11 +299,11 @@ CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4]
 // checks of Surface::eval: singular_point for an undefined normal,
 // numerical_overflow for a non-finite result. What is wanted is known at
 // compile time (the kernel index), except the point itself.
-template <bool DU, bool DV, bool NORMAL, bool CANAL, class Ops>
+template <bool DU, bool DV, bool NORMAL, bool CANAL>
 CYC_ALWAYS_INLINE bool frame_eval(const CompiledFrame& F, const double (&f4)[4], double u,
                                   double v, const EvalOut& out, Status& status) {
   PointResult P;
-  if (!frame_point<DU, DV, NORMAL, CANAL, Ops>(F, f4, u, v, P)) return false;
+  if (!frame_point<DU, DV, NORMAL, CANAL>(F, f4, u, v, P)) return false;
   if (NORMAL && !CANAL && P.singular != 0.0) {
     status = Status::singular_point;
     return true;
@@ -357,24 +329,6 @@ CYC_ALWAYS_INLINE bool frame_eval(const CompiledFrame& F, const double (&f4)[4],
 
 // ------------------------------------------------------------ variants
 
-#if defined(CYC_AVX2_FMA_TARGET)
-// The Horner step of the AVX2+FMA variant: one explicit fused multiply-add
-// (rounded once) instead of a multiply and an add. It shortens the Horner
-// chains, the critical path of a single point (bench/README.md), from 6 to
-// 4 cycles of latency per step on Zen 3. The compiler never contracts by itself
-// (-ffp-contract=off): this is the only fused operation, and every path of
-// the variant (rows for grids and batches, single points) runs it, so they
-// still give identical bits; only the variants differ (by rounding).
-// Not always_inline (the templates that call it are compiled without FMA);
-// the variant's wrappers are `flatten`, which inlines it there.
-struct FusedMulAdd {
-  __attribute__((target("avx2,fma"))) static inline void step(Lane4& r, const Lane4& t,
-                                                              const Lane4& c) {
-    r = Lane4(_mm256_fmadd_pd(__m256d(r), __m256d(t), __m256d(c)));
-  }
-};
-#endif
-
 #define CYC_FLAGS(i) ((i) & 8) != 0, ((i) & 4) != 0, ((i) & 2) != 0, ((i) & 1) != 0
 #define CYC_TABLE(fn)                                                              \
   {fn<CYC_FLAGS(0)>,  fn<CYC_FLAGS(1)>,  fn<CYC_FLAGS(2)>,  fn<CYC_FLAGS(3)>,  \
@@ -382,9 +336,8 @@ struct FusedMulAdd {
    fn<CYC_FLAGS(8)>,  fn<CYC_FLAGS(9)>,  fn<CYC_FLAGS(10)>, fn<CYC_FLAGS(11)>, \
    fn<CYC_FLAGS(12)>, fn<CYC_FLAGS(13)>, fn<CYC_FLAGS(14)>, fn<CYC_FLAGS(15)>}
 
-// The wrappers of one variant: NAME is its suffix, ATTR its attributes,
-// OPS its Horner step (compiled_frame.hpp), FUSED whether that is an FMA.
-#define CYC_VARIANT(NAME, ATTR, LABEL, OPS, FUSED)                                       \
+// The wrappers of one variant: NAME is its suffix, ATTR its attributes.
+#define CYC_VARIANT(NAME, ATTR, LABEL)                                                   \
   template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
   ATTR std::size_t grid_##NAME(const CircleRow* rows, int nrows, std::size_t first_row,  \
                                const double* vs, std::size_t nv, const GridOut& out) {   \
@@ -397,26 +350,25 @@ struct FusedMulAdd {
   template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
   ATTR bool frame_point_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,   \
                                double v, PointResult& P) {                               \
-    return frame_point<DU, DV, NORMAL, CANAL, OPS>(F, f4, u, v, P);                      \
+    return frame_point<DU, DV, NORMAL, CANAL>(F, f4, u, v, P);                           \
   }                                                                                      \
   template <bool DU, bool DV, bool NORMAL, bool CANAL>                                   \
   ATTR bool frame_eval_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,    \
                               double v, const EvalOut& out, Status& status) {            \
-    return frame_eval<DU, DV, NORMAL, CANAL, OPS>(F, f4, u, v, out, status);             \
+    return frame_eval<DU, DV, NORMAL, CANAL>(F, f4, u, v, out, status);                  \
   }                                                                                      \
   template <bool WITH_DU>                                                                \
   ATTR bool frame_row_##NAME(const CompiledFrame& F, const double(&f4)[4], double u,     \
                              CircleRow& row) {                                           \
-    return F.row<WITH_DU, true, OPS>(u, f4, row);                                        \
+    return F.row<WITH_DU>(u, f4, row);                                                   \
   }                                                                                      \
-  const Kernels k_##NAME = {LABEL, FUSED, CYC_TABLE(grid_##NAME), CYC_TABLE(point_##NAME), \
+  const Kernels k_##NAME = {LABEL, CYC_TABLE(grid_##NAME), CYC_TABLE(point_##NAME),      \
                             CYC_TABLE(frame_point_##NAME), CYC_TABLE(frame_eval_##NAME), \
                             {frame_row_##NAME<false>, frame_row_##NAME<true>}};
 
-CYC_VARIANT(baseline, CYC_FLATTEN, "baseline", MulAdd, false)
+CYC_VARIANT(baseline, CYC_FLATTEN, "baseline")
 #if defined(CYC_AVX2_TARGET)
-CYC_VARIANT(avx2, CYC_AVX2_TARGET, "x86-64-v3 (AVX2)", MulAdd, false)
-CYC_VARIANT(avx2_fma, CYC_AVX2_FMA_TARGET, "x86-64-v3 (AVX2, FMA Horner)", FusedMulAdd, true)
+CYC_VARIANT(avx2, CYC_AVX2_TARGET, "x86-64-v3 (AVX2)")
 #endif
 
 #undef CYC_VARIANT
@@ -435,18 +387,8 @@ const Kernels* avx2_kernels() {
   return nullptr;
 }
 
-const Kernels* avx2_fma_kernels() {
-#if defined(CYC_AVX2_FMA_TARGET)
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return &k_avx2_fma;
-#endif
-  return nullptr;
-}
-
 const Kernels& kernels() {
-  static const Kernels* const chosen = avx2_fma_kernels() ? avx2_fma_kernels()
-                                       : avx2_kernels()   ? avx2_kernels()
-                                                          : &k_baseline;
+  static const Kernels* const chosen = avx2_kernels() ? avx2_kernels() : &k_baseline;
   return *chosen;
 }
 

@@ -129,11 +129,12 @@ Status eval_by_row(const Surface& S, double u, double v, const EvalOut& out) {
 
 Status Surface::eval(double u, double v, const EvalOut& out) const noexcept {
   if (!input_ok(u) || !std::isfinite(v)) return Status::not_finite;
-  if (compiled.frame_eval) {  // the fast path: compiled frame to the outputs in one kernel
+  if (f_constant) {  // the fast path: compiled frame to the outputs in one kernel
+    double f4[4];
+    constant_f(f4);
     Status st;
-    // The table is offset by the canal flag (compile_frames).
-    const int k = kernel_index(out.du, out.dv, out.normal, false);
-    if (compiled.frame_eval[k](compiled, compiled.f_const, u, v, out, st)) return st;
+    const int k = kernel_index(out.du, out.dv, out.normal, is_canal_by_construction());
+    if (kernels().frame_eval[k](compiled, f4, u, v, out, st)) return st;
   }
   return eval_by_row(*this, u, v, out);
 }
@@ -357,9 +358,6 @@ void compile_frames(Surface& S) {
       return;
     dst[i]->assign(xyzw);
     if (i == 0) weight_o = xyzw[3];
-    const bool unit_weight = xyzw[3].deg == 0 && xyzw[3].c[0] == 1.0;
-    if (i == 1) C.a_unit_weight = unit_weight;
-    if (i == 2) C.p_unit_weight = unit_weight;
   }
   C.axis_is_spine_derivative = S.kind == SurfaceKind::prcs;
   C.valid = true;
@@ -395,10 +393,6 @@ void compile_frames(Surface& S) {
         const double tol = (order == 0 ? 1.0 : 100.0) * kCompiledTol;
         if (!((m - r).norm() <= tol * size)) return;
       }
-  }
-  if (S.f_constant) {  // Surface::eval's fast path (compiled_frame.hpp)
-    S.constant_f(C.f_const);
-    C.frame_eval = kernels().frame_eval + kernel_index(false, false, false, S.is_canal_by_construction());
   }
   S.compiled = C;
 }
