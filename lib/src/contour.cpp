@@ -1,11 +1,11 @@
 // Contour curves of ringed surfaces (seed 001 §7); see contour.hpp.
 #include "cyclide/contour.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
 #include "cyclide/ringed.hpp"
+#include "poly_roots.hpp"
 #include "power_form.hpp"
 
 namespace cyclide {
@@ -20,29 +20,17 @@ void plane_basis(const Vec3d& a, Vec3d& e1, Vec3d& e2) {
   e2 = a.cross(e1);
 }
 
-// Real roots of sum_k q[k] z^k (degree <= 4, leading coefficient nonzero)
-// by the companion matrix (fixed size: no heap).
+// Real roots of sum_k q[k] z^k (degree <= 4, leading coefficient nonzero):
+// the nearly real ones of detail::poly_roots.
 int real_roots_quartic(const double* q, int deg, double* z) {
   if (deg == 0) return 0;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> C =
-      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>::Zero(deg, deg);
-  for (int i = 1; i < deg; ++i) C(i, i - 1) = 1.0;
-  for (int i = 0; i < deg; ++i) C(i, deg - 1) = -q[i] / q[deg];
-  Eigen::EigenSolver<decltype(C)> es(C, false);
-  if (es.info() != Eigen::Success) return 0;
+  CurvePoly p;
+  p.assign(q, deg);
+  std::complex<double> w[4];
+  if (detail::poly_roots(p, w) != deg) return 0;
   int r = 0;
-  for (int i = 0; i < deg; ++i) {
-    const std::complex<double> w = es.eigenvalues()(i);
-    if (std::abs(w.imag()) > 1e-7 * (1 + std::abs(w))) continue;
-    // One Newton step on the polynomial polishes the real root.
-    double x = w.real(), p = q[deg], dp = 0;
-    for (int k = deg - 1; k >= 0; --k) {
-      dp = dp * x + p;
-      p = p * x + q[k];
-    }
-    if (std::abs(dp) > 0 && std::isfinite(p / dp)) x -= p / dp;
-    z[r++] = x;
-  }
+  for (int i = 0; i < deg; ++i)
+    if (std::abs(w[i].imag()) <= 1e-7 * (1 + std::abs(w[i]))) z[r++] = w[i].real();
   return r;
 }
 

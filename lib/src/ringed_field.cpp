@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "cyclide/pcurve.hpp"
+#include "poly_roots.hpp"
 #include "power_form.hpp"
 
 namespace cyclide {
@@ -15,8 +16,6 @@ inline namespace v0 {
 namespace {
 
 constexpr int kMaxSosDegree = kMaxCurveDegree - 1;  // even bound on deg |N|^2 (14)
-using Companion = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSosDegree,
-                                kMaxSosDegree>;
 using CPoly = Complex[kMaxCurveDegree + 1];
 
 using detail::finite;
@@ -39,41 +38,6 @@ CurvePoly square_norm(const CurvePoly (&N)[3]) {
   return s;
 }
 
-// The roots of p (degree 1..kMaxSosDegree, leading coefficient nonzero):
-// eigenvalues of the companion matrix (fixed capacity: no heap), each
-// polished by up to three Newton steps that must decrease |p|.
-int poly_roots(const CurvePoly& p, Complex* roots) {
-  const int m = p.deg;
-  Companion C = Companion::Zero(m, m);
-  for (int i = 1; i < m; ++i) C(i, i - 1) = 1.0;
-  for (int i = 0; i < m; ++i) C(i, m - 1) = -p.c[i] / p.c[m];
-  Eigen::EigenSolver<Companion> es(C, false);
-  if (es.info() != Eigen::Success) return -1;
-  for (int i = 0; i < m; ++i) {
-    Complex z = es.eigenvalues()(i);
-    auto eval = [&](Complex x, Complex& d) {
-      Complex s = p.c[m];
-      d = 0;
-      for (int k = m - 1; k >= 0; --k) {
-        d = d * x + s;
-        s = s * x + p.c[k];
-      }
-      return s;
-    };
-    for (int it = 0; it < 3; ++it) {
-      Complex d;
-      const Complex v = eval(z, d);
-      if (!(std::abs(d) > 0)) break;
-      const Complex z2 = z - v / d;
-      Complex d2;
-      if (!(std::abs(eval(z2, d2)) < std::abs(v))) break;
-      z = z2;
-    }
-    roots[i] = z;
-  }
-  return m;
-}
-
 // g = sqrt(lead) prod (t - z_k) over the m roots of |N|^2 = q (degree 2m)
 // with the largest imaginary parts, as complex coefficients; the relative
 // remainder of |g|^2 - q. False if the roots cannot be computed.
@@ -83,7 +47,7 @@ bool sum_of_squares(const CurvePoly& q, CPoly& g, int& m, double& residual) {
   g[0] = std::sqrt(q.c[q.deg]);
   if (m > 0) {
     Complex z[kMaxSosDegree];
-    if (poly_roots(q, z) != q.deg) return false;
+    if (detail::poly_roots(q, z) != q.deg) return false;
     // Largest imaginary parts first (insertion sort: at most 14 roots).
     for (int i = 1; i < q.deg; ++i)
       for (int j = i; j > 0 && z[j].imag() > z[j - 1].imag(); --j) std::swap(z[j], z[j - 1]);
@@ -113,7 +77,7 @@ int real_roots(const CurvePoly& p, double* out) {
   a.trim_relative(1e-15);
   if (a.deg == 0) return 0;
   Complex z[kMaxCurveDegree];
-  if (a.deg > kMaxSosDegree || poly_roots(a, z) != a.deg) return -1;
+  if (a.deg > kMaxSosDegree || detail::poly_roots(a, z) != a.deg) return -1;
   int r = 0;
   for (int i = 0; i < a.deg; ++i)
     if (std::abs(z[i].imag()) <= 1e-6 * (1 + std::abs(z[i]))) out[r++] = z[i].real();
