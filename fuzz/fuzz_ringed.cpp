@@ -4,7 +4,8 @@
 // fuzzed Hermite jets and options (sign, tau, v; NULL options / pieces /
 // count / jets), cyc_surface_ringed_jet on what was built, and the
 // creators from (d, n, rho): cyc_ringed_dnr_create (every field method and
-// unknown ones) and cyc_ringed_pcurve_create (Prop. 3.1), and the contour
+// unknown ones), cyc_ringed_pcurve_create (Prop. 3.1) and
+// cyc_ringed_sqrt_create (Theorem 3.6, rho = sqrt(R)), and the contour
 // points (Definition 7.1) of every surface built, and the bumped blend of
 // §5 with its clearance (54) and deviance (58), and its optimizer (§5.a).
 //
@@ -320,8 +321,49 @@ void check_ringed_ok(Ctx& c, cyc_surface* out, cyc_surface* again, const char* f
   check_contour(c, out);
 }
 
+// Theorem 3.6: cyc_ringed_sqrt_create with R = the fuzzed rho's num / den
+// (the same d, n, options and domain as op_dnr; no further bytes): errors
+// leave the outputs untouched; OK reports a remainder <= 1e-8, is
+// deterministic and gives a valid ringed surface.
+void op_sqrt(Ctx& c, cyc_curve* d, cyc_curve* n, const Radius& r,
+             const cyc_ringed_field_options* o, const double (&u)[2]) {
+  cyc_surface* out = kSentinel;
+  cyc_ringed_sqrt_report rep, rep0;
+  std::memset(&rep, 0x5a, sizeof rep);
+  rep0 = rep;
+  FZ_LOG("cyc_ringed_sqrt_create d %p n %p", (void*)d, (void*)n);
+  auto call = [&](cyc_surface** p, cyc_ringed_sqrt_report* R) {
+    return cyc_ringed_sqrt_create(c.ctx, d, n, r.num_degree, r.num, r.den_degree,
+                                  r.has_den ? r.den : nullptr, o, nullptr, u[0], u[1], p, R);
+  };
+  const int s = call(&out, &rep);
+  c.check("cyc_ringed_sqrt_create", s);
+  if (!d || !n) FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "cyc_ringed_sqrt_create: NULL gives %s",
+                         cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(out == kSentinel && std::memcmp(&rep, &rep0, sizeof rep) == 0,
+             "cyc_ringed_sqrt_create: outputs written on error");
+    return;
+  }
+  FZ_CHECK(rep.exact_square == 0 || rep.exact_square == 1, "exact_square %d", rep.exact_square);
+  FZ_CHECK(rep.conic_residual >= 0 && rep.conic_residual <= 1e-8, "conic residual %g",
+           rep.conic_residual);
+  cyc_surface* again = nullptr;
+  cyc_ringed_sqrt_report rep2;
+  const int s2 = call(&again, &rep2);
+  c.check("cyc_ringed_sqrt_create", s2);
+  FZ_CHECK(s2 == CYC_OK && rep.exact_square == rep2.exact_square &&
+               rep.conic_degree == rep2.conic_degree &&
+               std::memcmp(&rep.conic_residual, &rep2.conic_residual, sizeof(double)) == 0,
+           "cyc_ringed_sqrt_create: second call differs");
+  check_ringed_ok(c, out, again, "cyc_ringed_sqrt_create");
+  cyc_surface_destroy(c.ctx, out);
+  cyc_surface_destroy(c.ctx, again);
+}
+
 // cyc_ringed_dnr_create (methods AUTO, PROJECTION, QUADRATIC, SOS, unknown)
-// and cyc_ringed_pcurve_create (Prop. 3.1) on fuzzed d, n, rho, x, phi.
+// and cyc_ringed_pcurve_create (Prop. 3.1) on fuzzed d, n, rho, x, phi, and
+// cyc_ringed_sqrt_create (Theorem 3.6) with R = rho's num / den.
 void op_dnr(Input& in, Ctx& c) {
   bool le = false, bad = false;
   cyc_curve* d = make_curve(in, c, le, bad);
@@ -417,6 +459,7 @@ void op_dnr(Input& in, Ctx& c) {
     check_ringed_ok(c, out, nullptr, "cyc_ringed_pcurve_create");
     cyc_surface_destroy(c.ctx, out);
   }
+  op_sqrt(c, d, n, r, null_options ? nullptr : &o, u);
   cyc_curve_destroy(c.ctx, d);
   cyc_curve_destroy(c.ctx, n);
 }

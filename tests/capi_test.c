@@ -2706,6 +2706,63 @@ static void test_blends(cyc_context* ctx) {
   cyc_surface_destroy(ctx, b);
 }
 
+/* Seed 001 §3.d, Theorem 3.6: rho = sqrt(R), R = (2 + u^2) / 1 not a square,
+ * n = (1, u, u^2): every point is at distance sqrt(R) from d in the plane
+ * perpendicular to n; statuses leave the outputs untouched. */
+static void test_ringed_sqrt(cyc_context* ctx) {
+  const double dc[6] = {0, 1, 0, 1, 0, 0.5};
+  const double nc[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const double R[3] = {2, 0, 1}, negative[3] = {-1, 0, 1}, zero[1] = {0}, nan_R[1] = {NAN};
+  const double square[3] = {4, 4, 1}; /* (2 + u)^2 */
+  cyc_curve *d = NULL, *n = NULL;
+  cyc_surface* S = SURF_SENT;
+  cyc_ringed_sqrt_report rep, untouched;
+  double x[3], dd[3], nn[3], e[3], r;
+  int kind = 0;
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 1, dc, 3, &d), CYC_OK);
+  CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, nc, 3, &n), CYC_OK);
+  memset(&untouched, 0x5a, sizeof untouched);
+  rep = untouched;
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 2, negative, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_E_EMPTY_REAL_LOCUS);
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 0, zero, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 2, R, 0, zero, NULL, NULL, -1, 1, &S, &rep),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 0, nan_R, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_E_NOT_FINITE);
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, NULL, 2, R, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_E_NULL_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 2, NULL, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_E_NULL_ARGUMENT);
+  CHECK(S == SURF_SENT && memcmp(&rep, &untouched, sizeof rep) == 0);
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 2, R, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_OK);
+  if (S != SURF_SENT && S) {
+    CHECK(rep.exact_square == 0 && rep.conic_residual < 1e-12 && rep.conic_degree == 6);
+    CHECK(rep.field.method == CYC_RINGED_FIELD_QUADRATIC);
+    CHECK_STATUS(ctx, cyc_surface_kind(ctx, S, &kind), CYC_OK);
+    CHECK(kind == CYC_SURFACE_RINGED);
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, S, 0.5, 0.3, x, NULL, NULL, NULL), CYC_OK);
+    dd[0] = 0.5; dd[1] = 1; dd[2] = 0.25;     /* d(0.5) */
+    nn[0] = 1; nn[1] = 0.5; nn[2] = 0.25;     /* n(0.5) */
+    e[0] = x[0] - dd[0]; e[1] = x[1] - dd[1]; e[2] = x[2] - dd[2];
+    r = sqrt(2.25);
+    CHECK(fabs(dist3(x, dd) - r) < 1e-12);
+    CHECK(fabs(e[0] * nn[0] + e[1] * nn[1] + e[2] * nn[2]) < 1e-12);
+    cyc_surface_destroy(ctx, S);
+  }
+  S = SURF_SENT;
+  CHECK_STATUS(ctx, cyc_ringed_sqrt_create(ctx, d, n, 2, square, 0, NULL, NULL, NULL, -1, 1, &S, &rep),
+               CYC_OK);
+  if (S != SURF_SENT && S) {
+    CHECK(rep.exact_square == 1 && rep.conic_residual == 0);
+    cyc_surface_destroy(ctx, S);
+  }
+  cyc_curve_destroy(ctx, d);
+  cyc_curve_destroy(ctx, n);
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -2731,7 +2788,7 @@ int main(void) {
     test_blends(ctx);
     test_ringed(ctx);
     test_ringed_dnr(ctx);
-  test_ringed_dnr(ctx);
+    test_ringed_sqrt(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

@@ -715,3 +715,145 @@ TEST(ConstrainedBlend, Equation54SphereClearance) {
   EXPECT_GT(moved, clear + 1.0);
   EXPECT_EQ(sphere_clearance(P[0], s, -1.0, moved), Status::invalid_argument);
 }
+
+// §3.d, Theorem 3.6: radius rho = sqrt(R) with R not a square.
+namespace {
+
+// Points of the ringed surface S with directrix d, axis n and radius
+// sqrt(R) (R = R_num / R_den) lie on their circles.
+void expect_on_sqrt_circles(const Surface& S, const RationalCurve& d, const RationalCurve& n,
+                            const CurvePoly& R_num, const CurvePoly& R_den, double t0, double t1,
+                            double tol) {
+  for (int i = 0; i <= 6; ++i) {
+    const double t = t0 + (t1 - t0) * i / 6.0;
+    const double rho = std::sqrt(R_num(t) / R_den(t));
+    for (double u : {-3.0, -0.5, 0.0, 0.8, 25.0}) {
+      const Vec3d X = point(S, t, u), D = d.point(t), N = n.point(t).normalized();
+      EXPECT_NEAR((X - D).norm(), rho, tol * (1 + rho)) << "t = " << t << " u = " << u;
+      EXPECT_NEAR((X - D).dot(N), 0.0, tol * (1 + rho)) << "t = " << t << " u = " << u;
+    }
+  }
+}
+
+}  // namespace
+
+// Eq. (24): the canal surface of the spine m = (t, t^2, t^3) and sphere
+// radius r = 1 + t/5, seen as a ringed surface (1): d = m - (r r' / |m'|^2)
+// m', n = m' and rho^2 = r^2 (|m'|^2 - r'^2) / |m'|^2, not a square. Theorem
+// 3.6's surface lies on the canal's spheres |X - m| = r, and its circles
+// have radius sqrt(R). |m'|^2 = 1 + 4t^2 + 9t^4 is not a square (m is not a
+// PH curve), R's denominator shares its roots (the reduced conic's G) and
+// r^2 is a square factor with a real root (t = -5).
+TEST(RingedSqrt, Equation24CanalSurface) {
+  const CurvePoly r = poly({1.0, 0.2});
+  const double dr = 0.2;
+  const CurvePoly m[3] = {poly({0, 1}), poly({0, 0, 1}), poly({0, 0, 0, 1})};
+  const CurvePoly dm[3] = {poly({1}), poly({0, 2}), poly({0, 0, 3})};
+  CurvePoly N, t1, t2;
+  for (const CurvePoly& p : dm) {
+    multiply(p, p, t1);
+    N = N + t1;
+  }
+  // d = (m N - r r' m') / N.
+  double dc[4 * 8] = {};
+  CurvePoly D[3];
+  for (int j = 0; j < 3; ++j) {
+    multiply(m[j], N, t1);
+    multiply(r.scaled(dr), dm[j], t2);
+    D[j] = t1 - t2;
+  }
+  RationalCurve d, n;
+  for (int k = 0; k <= 7; ++k) {
+    for (int j = 0; j < 3; ++j) dc[4 * k + j] = D[j].c[k];
+    dc[4 * k + 3] = N.c[k];
+  }
+  ASSERT_EQ(make_rational_curve(7, dc, d), Status::ok);
+  const double nc[9] = {1, 0, 0, 0, 2, 0, 0, 0, 3};
+  ASSERT_EQ(make_polynomial_curve(2, nc, n), Status::ok);
+  CurvePoly r2, R_num;
+  multiply(r, r, r2);
+  multiply(r2, N - CurvePoly(dr * dr), R_num);
+  Surface S;
+  RingedSqrtReport rep;
+  ASSERT_EQ(make_ringed_sqrt(d, n, R_num, N, RingedFieldOptions(), nullptr, -1, 1, S, &rep),
+            Status::ok);
+  EXPECT_FALSE(rep.exact_square);
+  EXPECT_EQ(rep.field.method, RingedFieldMethod::quadratic);  // Example 3.3 for n = m'
+  EXPECT_LT(rep.residual, 1e-12);
+  EXPECT_EQ(rep.conic_degree, 8);  // G = |m'|^2 / 9, P1 = |m'|^2 - r'^2
+  expect_on_sqrt_circles(S, d, n, R_num, N, -1, 1, 1e-11);
+  for (double t : {-1.0, -0.2, 0.6, 1.0})
+    for (double u : {-2.0, 0.0, 1.0, 9.0}) {
+      const Vec3d M(m[0](t), m[1](t), m[2](t));
+      EXPECT_NEAR((point(S, t, u) - M).norm(), r(t), 1e-11) << t << " " << u;
+    }
+}
+
+// A ringed surface that is not canal: n = (1, t, t^2) (|n|^2 = 1 + t^2 +
+// t^4 is not a square and no projection of n is a P-curve along the axes),
+// R = 2 + t^2; the reduced conic x^2 + |n|^2 y^2 = R z^2 has no common roots.
+TEST(RingedSqrt, Theorem36GeneralRadius) {
+  RationalCurve d, n;
+  const double dc[6] = {0, 1, 0, 1, 0, 0.5};
+  ASSERT_EQ(make_polynomial_curve(1, dc, d), Status::ok);
+  const double nc[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  ASSERT_EQ(make_polynomial_curve(2, nc, n), Status::ok);
+  const CurvePoly R = poly({2, 0, 1}), one = poly({1});
+  RationalField f;
+  RingedSqrtReport rep;
+  for (auto method : {RingedFieldMethod::automatic, RingedFieldMethod::sos}) {
+    RingedFieldOptions o;
+    o.method = method;
+    ASSERT_EQ(sqrt_radius_field(n, R, one, o, f, &rep), Status::ok);
+    EXPECT_EQ(rep.conic_degree, 6);
+    EXPECT_LT(rep.residual, 1e-12);
+    for (double t : {-4.0, -1.0, 0.0, 0.5, 3.0}) {
+      const Vec3d F = eval3(f.F, t) / f.w(t), Nt = n.point(t);
+      EXPECT_NEAR(F.squaredNorm(), R(t), 1e-11 * R(t));
+      EXPECT_NEAR(F.dot(Nt) / Nt.norm(), 0.0, 1e-11 * std::sqrt(R(t)));
+    }
+  }
+  Surface S;
+  ASSERT_EQ(make_ringed_sqrt(d, n, R, one, RingedFieldOptions(), nullptr, -2, 2, S, &rep),
+            Status::ok);
+  expect_on_sqrt_circles(S, d, n, R, one, -2, 2, 1e-11);
+}
+
+// Statuses: R < 0 somewhere, zero polynomials, a square R (rational rho).
+TEST(RingedSqrt, StatusesAndSquareRadius) {
+  RationalCurve n, d, p;
+  const double nc[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  ASSERT_EQ(make_polynomial_curve(2, nc, n), Status::ok);
+  const double dc[3] = {0, 0, 0};
+  ASSERT_EQ(make_polynomial_curve(0, dc, d), Status::ok);
+  const CurvePoly one = poly({1});
+  RationalField f;
+  RingedSqrtReport rep;
+  const RingedFieldOptions o;
+  EXPECT_EQ(sqrt_radius_field(n, poly({-1, 0, 1}), one, o, f), Status::empty_real_locus);
+  EXPECT_EQ(sqrt_radius_field(n, poly({-1}), one, o, f), Status::empty_real_locus);
+  EXPECT_EQ(sqrt_radius_field(n, poly({0, 1}), one, o, f), Status::empty_real_locus);
+  EXPECT_EQ(sqrt_radius_field(n, poly({1, 0, -1}), poly({2, 0, 1}), o, f),
+            Status::empty_real_locus);
+  EXPECT_EQ(sqrt_radius_field(n, poly({0}), one, o, f), Status::invalid_argument);
+  EXPECT_EQ(sqrt_radius_field(n, one, poly({0}), o, f), Status::invalid_argument);
+  EXPECT_EQ(sqrt_radius_field(n, poly({NAN}), one, o, f), Status::not_finite);
+  ASSERT_EQ(make_point(Vec3d(1, 2, 3), p), Status::ok);
+  EXPECT_EQ(sqrt_radius_field(p, one, one, o, f), Status::invalid_argument);
+  // R = (1 + t)^2 / (2 + t^2)^2... a square: rho = (1 + t) / (2 + t^2) exactly.
+  ASSERT_EQ(sqrt_radius_field(n, poly({1, 2, 1}), poly({4, 0, 4, 0, 1}), o, f, &rep),
+            Status::ok);
+  EXPECT_TRUE(rep.exact_square);
+  EXPECT_EQ(rep.residual, 0.0);
+  for (double t : {-2.0, 0.0, 1.5}) {
+    const Vec3d F = eval3(f.F, t) / f.w(t);
+    EXPECT_NEAR(F.norm(), std::abs(1 + t) / (2 + t * t), 1e-13);
+  }
+  // A double real root of R (a zero radius, the surface's singular point)
+  // is a square factor: the field exists, the surface is singular there.
+  ASSERT_EQ(sqrt_radius_field(n, poly({0, 0, 2, 0, 1}), one, o, f, &rep), Status::ok);
+  EXPECT_LT(rep.residual, 1e-12);
+  Surface S;
+  EXPECT_EQ(make_ringed_sqrt(d, n, poly({0, 0, 2, 0, 1}), one, o, nullptr, -1, 1, S),
+            Status::singular_point);
+}

@@ -55,6 +55,39 @@ Outcome ringed_failure(const char* fn, Status s, double bad_u) {
   return located(s) && std::isfinite(bad_u) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
 }
 
+// The field options of the (d, n, rho) creators (NULL: defaults).
+Outcome field_options(const char* fn, const cyc_ringed_field_options* options,
+                      RingedFieldOptions& o) {
+  if (!options) return ok();
+  if (options->method < 0 || options->method > 3)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown method %d", fn, options->method);
+  o.method = RingedFieldMethod(options->method);
+  o.v = vec(options->v);
+  o.which = options->which;
+  return ok();
+}
+
+// The inputs of the (d, n, rho) creators: rho (or R), the circle
+// parameter and the field options.
+Outcome dnr_inputs(const char* fn, int num_degree, const double* num, int den_degree,
+                   const double* den, const cyc_mobius* f,
+                   const cyc_ringed_field_options* options, CurvePoly& rn, CurvePoly& rd,
+                   Mobius& m, RingedFieldOptions& o) {
+  if (Outcome e = radius_and_circle(fn, num_degree, num, den_degree, den, f, rn, rd, m); e.status)
+    return e;
+  return field_options(fn, options, o);
+}
+
+cyc_ringed_field_report field_report(const RingedFieldReport& rep) {
+  cyc_ringed_field_report R;
+  R.method = int(rep.method);
+  put3(R.v, rep.v);
+  R.directions = rep.directions;
+  R.sos_residual = rep.sos.residual;
+  R.sos_margin = rep.method == RingedFieldMethod::sos ? rep.sos.margin : 0.0;
+  return R;
+}
+
 }  // namespace
 
 extern "C" {
@@ -79,18 +112,11 @@ int cyc_ringed_dnr_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve*
     REQUIRE(out);
     CurvePoly rn, rd;
     Mobius m;
-    if (Outcome o = radius_and_circle(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, f,
-                                      rn, rd, m);
-        o.status)
-      return o;
     RingedFieldOptions o;
-    if (options) {
-      if (options->method < 0 || options->method > 3)
-        return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown method %d", fn, options->method);
-      o.method = RingedFieldMethod(options->method);
-      o.v = vec(options->v);
-      o.which = options->which;
-    }
+    if (Outcome e = dnr_inputs(fn, rho_num_degree, rho_num, rho_den_degree, rho_den, f, options,
+                               rn, rd, m, o);
+        e.status)
+      return e;
     Surface S;
     RingedFieldReport rep;
     double bad_u = NAN;
@@ -99,13 +125,50 @@ int cyc_ringed_dnr_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve*
         s != Status::ok)
       return ringed_failure(fn, s, bad_u);
     if (Outcome e = emit(fn, ctx, out, S); e.status) return e;
+    if (report) *report = field_report(rep);
+    return ok();
+  });
+}
+
+int cyc_ringed_sqrt_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                           int R_num_degree, const double* R_num, int R_den_degree,
+                           const double* R_den, const cyc_ringed_field_options* options,
+                           const cyc_mobius* f, double u0, double u1, cyc_surface** out,
+                           cyc_ringed_sqrt_report* report) {
+  const char* fn = "cyc_ringed_sqrt_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(d);
+    REQUIRE(n);
+    REQUIRE(out);
+    CurvePoly rn, rd;
+    Mobius m;
+    RingedFieldOptions o;
+    if (Outcome e =
+            dnr_inputs(fn, R_num_degree, R_num, R_den_degree, R_den, f, options, rn, rd, m, o);
+        e.status)
+      return e;
+    if (rn.is_zero()) return fail(CYC_E_INVALID_ARGUMENT, "%s: R_num is zero", fn);
+    Surface S;
+    RingedSqrtReport rep;
+    double bad_u = NAN;
+    if (Status s = make_ringed_sqrt(d->curve, n->curve, rn, rd, o, f ? &m : nullptr, u0, u1, S,
+                                    &rep, &bad_u);
+        s != Status::ok) {
+      if (s == Status::empty_real_locus)
+        return fail(int(s), "%s: %s (R = R_num / R_den is negative somewhere on the real line)",
+                    fn, explain(s));
+      if (s == Status::not_pythagorean)
+        return fail(int(s), "%s: %s (the numerical conic step left a remainder above 1e-8, "
+                    "or the field's method does not apply)", fn, explain(s));
+      return ringed_failure(fn, s, bad_u);
+    }
+    if (Outcome e = emit(fn, ctx, out, S); e.status) return e;
     if (report) {
-      cyc_ringed_field_report R;
-      R.method = int(rep.method);
-      put3(R.v, rep.v);
-      R.directions = rep.directions;
-      R.sos_residual = rep.sos.residual;
-      R.sos_margin = rep.method == RingedFieldMethod::sos ? rep.sos.margin : 0.0;
+      cyc_ringed_sqrt_report R;
+      R.field = field_report(rep.field);
+      R.exact_square = rep.exact_square ? 1 : 0;
+      R.conic_residual = rep.residual;
+      R.conic_degree = rep.conic_degree;
       *report = R;
     }
     return ok();

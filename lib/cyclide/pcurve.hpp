@@ -139,6 +139,39 @@ Status make_ringed_dnr(const RationalCurve& d, const RationalCurve& n, const Cur
                        const Mobius* circle_f, double u0, double u1, Surface& out,
                        RingedFieldReport* report = nullptr, double* bad_u = nullptr);
 
+// §3.d, Theorem 3.6: the ringed surface R : (d, n, rho = sqrt(R)), R =
+// R_num / R_den >= 0 a rational function that need not be a square (as for
+// a canal surface seen as ringed, eq. (24)). f with n.f = 0 and f.f = R (25)
+// is found as f = (a u + b n x u) / (c R_den), u = ringed_field(n, options)
+// a unit field perpendicular to n, and a, b, c polynomials solving the conic
+// a^2 + |n|^2 b^2 = R_num R_den c^2 over R[t] (the paper's (34)-(35)). The
+// conic is solved NUMERICALLY (roots of |n|^2 and R_num R_den by the
+// companion matrix, then a null space and an isotropic vector; see
+// ringed_sqrt.cpp), so |f|^2 = R holds to the reported residual; f.n = 0 is
+// exact when u is. When R_num R_den is a square, rho is rational and f =
+// sqrt(R_num R_den) u / R_den (exact_square).
+struct RingedSqrtReport {
+  RingedFieldReport field;    // how u was found
+  bool exact_square = false;  // R_num R_den was a polynomial square
+  double residual = 0.0;      // max|coef(a^2 + N b^2 - P c^2)| / max of the terms' coefs
+  int conic_degree = 0;       // deg of G N1 P1, the reduced conic (ringed_sqrt.cpp)
+};
+// invalid_argument: R_num or R_den zero, n a point/line element or zero;
+// not_finite; empty_real_locus: R < 0 somewhere on R (odd-multiplicity real
+// root, negative leading coefficient or odd degree of R_num R_den);
+// degree_too_high: R_num R_den or 2 deg n beyond 14, or f beyond
+// kMaxCurveDegree; not_pythagorean: the numerical conic step failed (its
+// remainder exceeded 1e-8); and the statuses of ringed_field.
+Status sqrt_radius_field(const RationalCurve& n, const CurvePoly& R_num, const CurvePoly& R_den,
+                         const RingedFieldOptions& options, RationalField& f,
+                         RingedSqrtReport* report = nullptr);
+// (26): c = d + f and the surface (3) through it; statuses of
+// sqrt_radius_field, ringed_curve and make_ringed (*bad_u).
+Status make_ringed_sqrt(const RationalCurve& d, const RationalCurve& n, const CurvePoly& R_num,
+                        const CurvePoly& R_den, const RingedFieldOptions& options,
+                        const Mobius* circle_f, double u0, double u1, Surface& out,
+                        RingedSqrtReport* report = nullptr, double* bad_u = nullptr);
+
 // Prop. 3.1: the ringed surface whose orientation function is the P-curve
 // n of the quaternion polynomial x (8), with f = (cos phi n1 + sin phi n2)
 // / sigma (12). Statuses of pcurve_frame, ringed_curve and make_ringed.

@@ -699,6 +699,38 @@ CYC_API int cyc_ringed_dnr_create(cyc_context* ctx, const cyc_curve* d, const cy
                                   double u0, double u1, cyc_surface** out,
                                   cyc_ringed_field_report* report);
 
+/** What cyc_ringed_sqrt_create did. */
+typedef struct cyc_ringed_sqrt_report {
+  cyc_ringed_field_report field; /* how the unit field u perpendicular to n was found */
+  int exact_square;              /* 1: R_num R_den was a polynomial square (rho rational) */
+  double conic_residual;         /* max |coef(a^2 + |n|^2 b^2 - R_num R_den c^2)| over the
+                                    largest coefficient of the terms: |f|^2 = R holds to
+                                    about this (0 if exact_square) */
+  int conic_degree;              /* degree of the reduced conic's coefficient product */
+} cyc_ringed_sqrt_report;
+
+/** Seed 001 §3.d, Theorem 3.6: the ringed surface (d, n, rho = sqrt(R)) with
+ *  R = R_num / R_den >= 0 a rational function that need not be a square (a
+ *  canal surface seen as ringed has such a radius, eq. (24)). f with n.f = 0
+ *  and f.f = R (25) is f = (a u + b n x u) / (c R_den), u the unit field of
+ *  options (as in cyc_ringed_dnr_create), a, b, c polynomials solving the
+ *  conic a^2 + |n|^2 b^2 = R_num R_den c^2 over R[t] (the paper's (34)-(35)),
+ *  found NUMERICALLY (roots by the companion matrix, a null space, an
+ *  isotropic vector, Gauss-Newton polish); c = d + f (26). The surface is
+ *  CYC_SURFACE_RINGED with exact circles; |f|^2 = R to
+ *  report->conic_residual. Statuses: CYC_E_EMPTY_REAL_LOCUS (R < 0 somewhere
+ *  on the real line), CYC_E_INVALID_ARGUMENT (R_num or R_den zero, n zero, a
+ *  point or line element), CYC_E_DEGREE_TOO_HIGH (R_num R_den or 2 deg n
+ *  beyond 14, f beyond CYC_MAX_CURVE_DEGREE), CYC_E_NOT_PYTHAGOREAN (the
+ *  numerical conic step left a remainder above 1e-8), those of
+ *  cyc_ringed_dnr_create's field, and those of cyc_ringed_create on the
+ *  domain (CYC_E_SINGULAR_POINT where R = 0). All or nothing. */
+CYC_API int cyc_ringed_sqrt_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
+                                   int R_num_degree, const double* R_num, int R_den_degree,
+                                   const double* R_den, const cyc_ringed_field_options* options,
+                                   const cyc_mobius* f, double u0, double u1, cyc_surface** out,
+                                   cyc_ringed_sqrt_report* report);
+
 /** Prop. 3.1: the ringed surface (d, n, rho) whose orientation function n is
  *  the spatial P-curve (8) of the quaternion polynomial x0 + x1 i + x2 j +
  *  x3 k, given as x_degree + 1 rows (x0, x1, x2, x3), row k the coefficients
