@@ -16,11 +16,11 @@ namespace optim {
 
 namespace {
 
-// The plain blend at a node: d, d', n (unit), rho.
+// The plain blend at a node: d, d', n (unit), rho, |rho'|.
 struct Node {
   double t;
   Vec3d d, dd, n;
-  double rho;
+  double rho, drho;
 };
 
 // b(t; tau) and b'(t; tau): (52) with the sign of ERRATA.md, or (57).
@@ -79,7 +79,12 @@ struct BumpCost {
         const SphereObstacle& S = objective->obstacles[o];
         const T e0 = X[0] - S.center.x(), e1 = X[1] - S.center.y(), e2 = X[2] - S.center.z();
         const T dist = sqrt(e0 * e0 + e1 * e1 + e2 * e2);
-        const T gap = T(S.radius + objective->clearance) - (dist - q.rho);
+        // Conservative over the node's cell [t - h/2, t + h/2] (h = 1/N):
+        // |d* - s| - rho changes by at most (|d*'| + |rho'|) h/2 to first
+        // order, so a zero hinge at every node clears the whole blend
+        // (without it, a large bump can pass the sphere between nodes).
+        const T reach = T(0.5 / N) * (sqrt(dn2) + T(q.drho));
+        const T gap = T(S.radius + objective->clearance) - (dist - q.rho) + reach;
         r[k++] = gap > T(0) ? T(so) * gap / L : T(0);
       }
     }
@@ -124,7 +129,9 @@ Status sample_nodes(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
     RingedData R;
     if (Status st = S.ringed(t, R); st != Status::ok) return st;
     if (!(R.n.norm() > 0)) return Status::dependent_planes;
-    nodes[i] = {t, R.c, R.dc, R.n.normalized(), std::sqrt(std::max(0.0, R.rho2))};
+    const double rho = std::sqrt(std::max(0.0, R.rho2));
+    nodes[i] = {t, R.c, R.dc, R.n.normalized(), rho,
+                rho > 0 ? std::abs(R.rho_rho_prime) / rho : 0.0};
   }
   return Status::ok;
 }

@@ -34,8 +34,10 @@ struct BumpOptions {
 // The start bump is options.bump of `blend` (w = 0: none; its kind is
 // kept). The cost (1/2 the sum of squared residuals): deviance/2 times the
 // midpoint rule of (58), plus obstacle_weight/2 times the mean over the
-// nodes of max(0, (r + clearance - (|d*(t) - s| - rho(t))) / L)^2 per
-// obstacle. d*, d*' are exact in (w, tau) (n, rho do not move: the circles
+// nodes of max(0, (r + clearance + (|d*'| + |rho'|) h/2 - (|d*(t) - s| -
+// rho(t))) / L)^2 per obstacle (h = 1/nodes: the hinge covers each node's
+// cell to first order, so a zero obstacle term means (54) holds between the
+// nodes too, not only at them). d*, d*' are exact in (w, tau) (n, rho do not move: the circles
 // translate), so Ceres differentiates them with Jets (AutoDiff, 4
 // parameters); bounds are Ceres' own. The result is rebuilt by
 // make_ringed_pcurve_blend; if that fails or costs more than the start,

@@ -967,8 +967,10 @@ CYC_API int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* 
 /** Seed 001 §5.a: the objective of cyc_optimize_pcurve_bump, a weighted sum
  *  of the deviance (58) (the integral of sin^2 angle(n, d*') by the midpoint
  *  rule on `nodes` nodes) and, per obstacle, the mean over the nodes of the
- *  squared hinge max(0, (radius + clearance - (|d*(t) - center| - rho(t))) / L)
- *  (eq. (54) with a margin; L = the ends' distance plus their radii). */
+ *  squared hinge max(0, (radius + clearance + (|d*'| + |rho'|) / (2 nodes)
+ *  - (|d*(t) - center| - rho(t))) / L) (eq. (54) with a margin, covering
+ *  each node's cell to first order; L = the ends' distance plus their
+ *  radii). */
 typedef struct cyc_bump_objective {
   double deviance; /* weight, default 1 */
   const cyc_blend_obstacle* obstacles;
