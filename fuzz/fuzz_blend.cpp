@@ -1006,6 +1006,32 @@ void check_opt_joins(Ctx& c, const OptCall& o, const OptOut& r) {
 
 // A second call with every output gives the same result (determinism, and
 // NULL optional outputs change nothing).
+// Issue 4's description of the same problem (cyc_optimize_blend_parameters):
+// OK whenever the optimizer is (the same validation and start search), 2
+// free orders per end, starts inside the boxes, and the chosen jets too.
+void check_parameters(Ctx& c, const OptCall& o, const OptOut& r) {
+  cyc_free_parameter P[2 * CYC_MAX_BLEND_ORDER];
+  int n = -1;
+  const int st = cyc_optimize_blend_parameters(c.ctx, o.kind, &o.ends[0], &o.ends[1], o.K, o.t0,
+                                               o.t1, o.null_opt ? nullptr : &o.opt, P,
+                                               2 * CYC_MAX_BLEND_ORDER, &n);
+  c.check("cyc_optimize_blend_parameters", st);
+  FZ_CHECK(st == CYC_OK, "optimize_blend OK but its parameters give %s", cyc_status_name(st));
+  if (st != CYC_OK) return;
+  const int fo = o.null_opt ? 0 : o.opt.free_orders;
+  const int free = fo > 0 ? fo : std::min(o.K, 2);
+  FZ_CHECK(n == 2 * free, "blend parameters: count %d for %d free orders", n, free);
+  for (int i = 0; i < n && i < 2 * CYC_MAX_BLEND_ORDER; ++i) {
+    const int e = i / free, m = i % free;
+    const double v = m == 0 ? r.ends[e].lambda : r.ends[e].phi[m - 1];
+    FZ_CHECK(P[i].role == CYC_PARAMETER_JET && P[i].index == e && P[i].order == m + 1 &&
+                 P[i].lower <= P[i].start && P[i].start <= P[i].upper && v >= P[i].lower &&
+                 v <= P[i].upper,
+             "blend parameter %d (end %d, order %d): chosen %g, start %g, box [%g, %g]", i, e,
+             m + 1, v, P[i].start, P[i].lower, P[i].upper);
+  }
+}
+
 void check_ok(Ctx& c, const OptCall& o, OptOut& r1) {
   FZ_CHECK(r1.S && r1.S != OptOut::sentinel_surface(), "optimize_blend: OK without a surface");
   double d0 = 0, d1 = 0;
@@ -1036,6 +1062,7 @@ void check_ok(Ctx& c, const OptCall& o, OptOut& r1) {
          m2.final_cost, m2.iterations, m2.termination, m2.seconds);
   check_summary(o, m2);
   for (int e = 0; e < 2; ++e) check_end(o, e, r2.ends[e]);
+  check_parameters(c, o, r2);
   check_rebuild(c, o, r2);
   check_opt_joins(c, o, r2);
   cyc_surface_destroy(c.ctx, r2.S);

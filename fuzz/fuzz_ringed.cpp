@@ -554,6 +554,24 @@ void op_bump_optimize(Input& in, Ctx& c) {
   sum.iterations = -7;
   FZ_LOG("cyc_optimize_pcurve_bump nodes %d obstacles %d (null %d) iters %d", o.nodes,
          o.obstacle_count, int(null_obstacles), p.max_iterations);
+  // Issue 4's description of the same problem's unknowns (no bytes read).
+  cyc_free_parameter params[4], params0[4];
+  std::memset(params, 0x5a, sizeof params);
+  std::memcpy(params0, params, sizeof params);
+  int nparams = -7;
+  const int sd = cyc_optimize_pcurve_bump_parameters(c.ctx, &a, &b, nullptr, nullptr, &p, params,
+                                                     4, &nparams);
+  c.check("cyc_optimize_pcurve_bump_parameters", sd);
+  if (sd != CYC_OK) {
+    FZ_CHECK(nparams == -7 && std::memcmp(params, params0, sizeof params) == 0,
+             "bump parameters: outputs written on error");
+  } else {
+    FZ_CHECK(nparams == 4, "bump parameters: count %d", nparams);
+    for (int i = 0; i < 4; ++i)
+      FZ_CHECK(params[i].lower <= params[i].start && params[i].start <= params[i].upper,
+               "bump parameter %d: start %g outside [%g, %g]", i, params[i].start,
+               params[i].lower, params[i].upper);
+  }
   const int s = cyc_optimize_pcurve_bump(c.ctx, &a, &b, nullptr, nullptr, &o, &p, pieces, &count,
                                          &chosen, &sum);
   c.check("cyc_optimize_pcurve_bump", s);
@@ -574,6 +592,14 @@ void op_bump_optimize(Input& in, Ctx& c) {
            "terms do not sum to the cost");
   FZ_CHECK(count == 1 || count == 2, "count %d", count);
   FZ_CHECK(chosen.tau > 0 && chosen.tau < 1, "chosen tau %g", chosen.tau);
+  if (sd == CYC_OK) {  // the chosen bump lies in the described boxes
+    for (int j = 0; j < 3; ++j)
+      FZ_CHECK(chosen.w[j] >= params[j].lower && chosen.w[j] <= params[j].upper,
+               "chosen w[%d] = %g outside [%g, %g]", j, chosen.w[j], params[j].lower,
+               params[j].upper);
+    FZ_CHECK(chosen.tau >= params[3].lower && chosen.tau <= params[3].upper,
+             "chosen tau %g outside [%g, %g]", chosen.tau, params[3].lower, params[3].upper);
+  }
   for (int k = 0; k < count; ++k) {
     check_points(c, pieces[k], nullptr, "cyc_optimize_pcurve_bump");
     cyc_surface_destroy(c.ctx, pieces[k]);

@@ -99,6 +99,56 @@ TEST(BlendOptimizer, RingedFig6FairerAndStillCK) {
   }
 }
 
+// Issue 4's common description of free parameters: describe_blend_parameters
+// lists what optimize_blend solves for (K = 2: phi', phi'' per end), with
+// boxes around the start, and the summary reports the chosen values — the
+// jets written to the chosen ends, inside their boxes.
+TEST(BlendOptimizer, FreeParametersDescribedAndReported) {
+  const Surface A = cone1(), B = cone2();
+  Ends E = fig6_ends(A, B, 3);
+  FreeParameters D;
+  ASSERT_EQ(describe_blend_parameters(BlendKind::ringed, E.s, E.e, 2, 0.0, 1.0, BlendOptions{}, D),
+            Status::ok);
+  ASSERT_EQ(D.count, 4);
+  for (int i = 0; i < D.count; ++i) {
+    const FreeParameter& q = D.p[i];
+    EXPECT_EQ(q.role, ParameterRole::jet);
+    EXPECT_EQ(q.index, i / 2);
+    EXPECT_EQ(q.order, i % 2 + 1);
+    EXPECT_LE(q.lower, q.start);
+    EXPECT_LE(q.start, q.upper);
+    EXPECT_LT(q.lower, q.upper);
+  }
+  EXPECT_EQ(D.p[0].lower, 0.25);  // lambda_0 = +1 at the start, -1 at the end
+  EXPECT_EQ(D.p[0].upper, 4.0);
+  EXPECT_EQ(D.p[2].lower, -4.0);
+  EXPECT_EQ(D.p[2].upper, -0.25);
+  EXPECT_EQ(D.p[1].lower, -4.0);
+  Surface X;
+  BlendEnd so, eo;
+  BlendSummary sum;
+  ASSERT_EQ(optimize_blend(BlendKind::ringed, E.s, E.e, 2, 0.0, 1.0, BlendObjective{},
+                           BlendOptions{}, X, &so, &eo, sum),
+            Status::ok);
+  ASSERT_EQ(sum.parameters.count, 4);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(sum.parameters.p[i].lower, D.p[i].lower);
+    EXPECT_EQ(sum.parameters.p[i].upper, D.p[i].upper);
+    EXPECT_EQ(sum.parameters.p[i].start, D.p[i].start);
+    EXPECT_GE(sum.parameters.p[i].value, D.p[i].lower);
+    EXPECT_LE(sum.parameters.p[i].value, D.p[i].upper);
+  }
+  EXPECT_EQ(sum.parameters.p[0].value, so.lambda);
+  EXPECT_EQ(sum.parameters.p[1].value, so.phi[0]);
+  EXPECT_EQ(sum.parameters.p[2].value, eo.lambda);
+  EXPECT_EQ(sum.parameters.p[3].value, eo.phi[0]);
+  // Validation as optimize_blend's.
+  BlendOptions bad;
+  bad.lambda_min_ratio = 2;
+  EXPECT_EQ(describe_blend_parameters(BlendKind::ringed, E.s, E.e, 2, 0.0, 1.0, bad, D),
+            Status::invalid_argument);
+}
+
 TEST(BlendOptimizer, CanalK2NeverWorseAndG1) {
   const Surface A = cone1(), B = cone2();
   Ends E = fig6_ends(A, B, 2);

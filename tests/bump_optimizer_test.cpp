@@ -97,6 +97,48 @@ TEST(BumpOptimizer, ClearsASphericalObstacle) {
   EXPECT_LT((K.d - J1.d).norm() + (K.dd - J1.dd).norm(), 1e-12);
 }
 
+// Issue 4's common description: w's three components in [-2L, 2L] and tau
+// in [0.2, 0.8] (or held), and the summary's chosen values are the bump
+// returned.
+TEST(BumpOptimizer, FreeParametersDescribedAndReported) {
+  RingedJet J1, J2;
+  example52_ends(J1, J2);
+  const double L = (J1.d - J2.d).norm() + J1.rho + J2.rho;
+  FreeParameters D;
+  BumpOptions opt;
+  ASSERT_EQ(describe_bump_parameters(J1, J2, RingedBlendOptions(), BumpObjective(), opt, D),
+            Status::ok);
+  ASSERT_EQ(D.count, 4);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_EQ(D.p[j].role, ParameterRole::bump_displacement);
+    EXPECT_EQ(D.p[j].index, j);
+    EXPECT_DOUBLE_EQ(D.p[j].upper, 2 * L);
+    EXPECT_DOUBLE_EQ(D.p[j].lower, -2 * L);
+    EXPECT_EQ(D.p[j].start, 0.0);
+  }
+  EXPECT_EQ(D.p[3].role, ParameterRole::bump_position);
+  EXPECT_EQ(D.p[3].lower, 0.2);
+  EXPECT_EQ(D.p[3].upper, 0.8);
+  EXPECT_EQ(D.p[3].start, 0.5);
+  Surface P[2];
+  int count = 0;
+  DirectrixBump bump;
+  BlendSummary sum;
+  ASSERT_EQ(optimize_pcurve_bump(J1, J2, RingedBlendOptions(), BumpObjective(), opt, P, count,
+                                 bump, sum),
+            Status::ok);
+  ASSERT_EQ(sum.parameters.count, 4);
+  for (int j = 0; j < 3; ++j) EXPECT_EQ(sum.parameters.p[j].value, bump.w[j]);
+  EXPECT_EQ(sum.parameters.p[3].value, bump.tau);
+  opt.free_tau = false;
+  ASSERT_EQ(describe_bump_parameters(J1, J2, RingedBlendOptions(), BumpObjective(), opt, D),
+            Status::ok);
+  EXPECT_EQ(D.p[3].lower, D.p[3].upper);  // held
+  opt.w_bound = 0;
+  EXPECT_EQ(describe_bump_parameters(J1, J2, RingedBlendOptions(), BumpObjective(), opt, D),
+            Status::invalid_argument);
+}
+
 TEST(BumpOptimizer, ValidationLeavesOutputsUntouched) {
   RingedJet J1, J2;
   example52_ends(J1, J2);

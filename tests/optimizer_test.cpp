@@ -178,6 +178,70 @@ TEST(Optimizer, BlendDefaultsAndSummary) {
   cyc_surface_destroy(f.ctx, Y);
 }
 
+// Issue 4's common description through the C ABI: the size query, the
+// boxes around the start, BUFFER_TOO_SMALL with nothing written, and the
+// optimized jets inside their boxes; the bump's w and tau likewise.
+TEST(Optimizer, FreeParametersThroughTheCApi) {
+  Fig6 f;
+  int count = -1;
+  ASSERT_EQ(cyc_optimize_blend_parameters(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0,
+                                          nullptr, nullptr, 0, &count),
+            CYC_OK);
+  ASSERT_EQ(count, 4);
+  cyc_free_parameter P[4], Q[4];
+  std::memset(Q, 0x5a, sizeof Q);
+  std::memcpy(P, Q, sizeof P);
+  int n = -1;
+  EXPECT_EQ(cyc_optimize_blend_parameters(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0,
+                                          nullptr, P, 3, &n),
+            CYC_E_BUFFER_TOO_SMALL);
+  EXPECT_EQ(n, -1);
+  EXPECT_EQ(std::memcmp(P, Q, sizeof P), 0);
+  EXPECT_EQ(cyc_optimize_blend_parameters(f.ctx, 7, &f.s, &f.e, 2, 0.0, 1.0, nullptr, P, 4, &n),
+            CYC_E_INVALID_ARGUMENT);
+  ASSERT_EQ(cyc_optimize_blend_parameters(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0,
+                                          nullptr, P, 4, &n),
+            CYC_OK);
+  ASSERT_EQ(n, 4);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(P[i].role, CYC_PARAMETER_JET);
+    EXPECT_EQ(P[i].index, i / 2);
+    EXPECT_EQ(P[i].order, i % 2 + 1);
+    EXPECT_LE(P[i].lower, P[i].start);
+    EXPECT_LE(P[i].start, P[i].upper);
+  }
+  cyc_surface* X = nullptr;
+  cyc_blend_end so, eo;
+  ASSERT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0, nullptr,
+                               nullptr, &X, &so, &eo, nullptr),
+            CYC_OK);
+  const double chosen[4] = {so.lambda, so.phi[0], eo.lambda, eo.phi[0]};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_GE(chosen[i], P[i].lower);
+    EXPECT_LE(chosen[i], P[i].upper);
+  }
+  cyc_surface_destroy(f.ctx, X);
+  // The bump: w in [-2L, 2L], tau in [0.2, 0.8].
+  cyc_ringed_jet a{}, b{};
+  a.n[0] = 1, a.dd[2] = 1, a.rho = 1;
+  b.d[2] = 3, b.n[0] = 1, b.n[1] = 1, b.dd[2] = 1, b.rho = 1;
+  ASSERT_EQ(cyc_optimize_pcurve_bump_parameters(f.ctx, &a, &b, nullptr, nullptr, nullptr, P, 4,
+                                                &n),
+            CYC_OK);
+  ASSERT_EQ(n, 4);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_EQ(P[j].role, CYC_PARAMETER_BUMP_DISPLACEMENT);
+    EXPECT_EQ(P[j].index, j);
+    EXPECT_DOUBLE_EQ(P[j].upper, 2 * 5.0);  // L = 3 + 1 + 1
+  }
+  EXPECT_EQ(P[3].role, CYC_PARAMETER_BUMP_POSITION);
+  EXPECT_EQ(P[3].lower, 0.2);
+  EXPECT_EQ(P[3].upper, 0.8);
+  EXPECT_EQ(cyc_optimize_pcurve_bump_parameters(f.ctx, &a, nullptr, nullptr, nullptr, nullptr, P,
+                                                4, &n),
+            CYC_E_NULL_ARGUMENT);
+}
+
 TEST(Optimizer, BlendErrorsLeaveOutputsUntouched) {
   Fig6 f;
   cyc_surface* const kSent = reinterpret_cast<cyc_surface*>(0x1);

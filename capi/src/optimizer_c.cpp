@@ -74,6 +74,69 @@ void cyc_optimize_options_init(cyc_optimize_options* p) {
   p->parameter_tolerance = 1e-8;
 }
 
+}  // extern "C"
+
+namespace {
+
+#if CYCLIDE_HAVE_CERES
+optim::BlendOptions blend_options_of(const cyc_optimize_options* options) {
+  cyc_optimize_options p;
+  cyc_optimize_options_init(&p);
+  if (options) p = *options;
+  optim::BlendOptions P;
+  P.free_orders = p.free_orders;
+  P.lambda_min_ratio = p.lambda_min_ratio;
+  P.lambda_max_ratio = p.lambda_max_ratio;
+  P.higher_bound = p.higher_bound;
+  P.max_iterations = p.max_iterations;
+  P.function_tolerance = p.function_tolerance;
+  P.gradient_tolerance = p.gradient_tolerance;
+  P.parameter_tolerance = p.parameter_tolerance;
+  return P;
+}
+
+optim::BumpOptions bump_options_of(const cyc_bump_options* options) {
+  cyc_bump_options p;
+  cyc_bump_options_init(&p);
+  if (options) p = *options;
+  optim::BumpOptions P;
+  P.w_bound = p.w_bound;
+  P.tau_min = p.tau_min;
+  P.tau_max = p.tau_max;
+  P.free_tau = p.free_tau != 0;
+  P.max_iterations = p.max_iterations;
+  P.function_tolerance = p.function_tolerance;
+  P.gradient_tolerance = p.gradient_tolerance;
+  P.parameter_tolerance = p.parameter_tolerance;
+  return P;
+}
+
+// The size query / copy of the _parameters entry points: all or nothing.
+Outcome emit_parameters(const char* fn, const optim::FreeParameters& D, cyc_free_parameter* params,
+                        int capacity, int* count) {
+  if (params && capacity < D.count)
+    return fail(CYC_E_BUFFER_TOO_SMALL, "%s: capacity %d < %d parameters", fn, capacity, D.count);
+  if (params)
+    for (int i = 0; i < D.count; ++i) {
+      const optim::FreeParameter& q = D.p[i];
+      cyc_free_parameter c;
+      c.role = int(q.role);
+      c.index = q.index;
+      c.order = q.order;
+      c.lower = q.lower;
+      c.upper = q.upper;
+      c.start = q.start;
+      params[i] = c;
+    }
+  *count = D.count;
+  return ok();
+}
+#endif
+
+}  // namespace
+
+extern "C" {
+
 int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
                        const cyc_blend_end* end, int K, double t0, double t1,
                        const cyc_blend_objective* objective, const cyc_optimize_options* options,
@@ -125,15 +188,7 @@ int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
     O.obstacle_weight = o.obstacle_weight;
     O.quadrature_t = o.quadrature_t;
     O.quadrature_v = o.quadrature_v;
-    optim::BlendOptions P;
-    P.free_orders = p.free_orders;
-    P.lambda_min_ratio = p.lambda_min_ratio;
-    P.lambda_max_ratio = p.lambda_max_ratio;
-    P.higher_bound = p.higher_bound;
-    P.max_iterations = p.max_iterations;
-    P.function_tolerance = p.function_tolerance;
-    P.gradient_tolerance = p.gradient_tolerance;
-    P.parameter_tolerance = p.parameter_tolerance;
+    const optim::BlendOptions P = blend_options_of(&p);
     Surface S;
     BlendEnd so, eo;
     optim::BlendSummary R;
@@ -243,15 +298,7 @@ int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a, const cy
     O.clearance = o.clearance;
     O.obstacle_weight = o.obstacle_weight;
     O.nodes = o.nodes;
-    optim::BumpOptions P;
-    P.w_bound = p.w_bound;
-    P.tau_min = p.tau_min;
-    P.tau_max = p.tau_max;
-    P.free_tau = p.free_tau != 0;
-    P.max_iterations = p.max_iterations;
-    P.function_tolerance = p.function_tolerance;
-    P.gradient_tolerance = p.gradient_tolerance;
-    P.parameter_tolerance = p.parameter_tolerance;
+    const optim::BumpOptions P = bump_options_of(&p);
     Surface S[2];
     int n = 0;
     DirectrixBump D;
@@ -283,6 +330,64 @@ int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a, const cy
     return ok();
 #else
     (void)blend; (void)start; (void)objective; (void)options; (void)chosen; (void)summary;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
+  });
+}
+
+int cyc_optimize_blend_parameters(cyc_context* ctx, int kind, const cyc_blend_end* start,
+                                  const cyc_blend_end* end, int K, double t0, double t1,
+                                  const cyc_optimize_options* options, cyc_free_parameter* params,
+                                  int capacity, int* count) {
+  const char* fn = "cyc_optimize_blend_parameters";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(start);
+    REQUIRE(end);
+    REQUIRE(start->surface);
+    REQUIRE(end->surface);
+    REQUIRE(count);
+#if CYCLIDE_HAVE_CERES
+    if (kind != CYC_BLEND_CANAL && kind != CYC_BLEND_RINGED)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: kind %d is neither CYC_BLEND_CANAL nor "
+                  "CYC_BLEND_RINGED", fn, kind);
+    optim::FreeParameters D;
+    double bad = t0;
+    const optim::BlendKind k =
+        kind == CYC_BLEND_CANAL ? optim::BlendKind::canal : optim::BlendKind::ringed;
+    const Status st = optim::describe_blend_parameters(k, end_of(*start), end_of(*end), K, t0, t1,
+                                                       blend_options_of(options), D, &bad);
+    if (st != Status::ok) return located(st) ? from_core_at(fn, st, bad) : from_core(fn, st);
+    return emit_parameters(fn, D, params, capacity, count);
+#else
+    (void)kind; (void)K; (void)t0; (void)t1; (void)options; (void)params; (void)capacity;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
+  });
+}
+
+int cyc_optimize_pcurve_bump_parameters(cyc_context* ctx, const cyc_ringed_jet* a,
+                                        const cyc_ringed_jet* b,
+                                        const cyc_pcurve_blend_options* blend,
+                                        const cyc_directrix_bump* start,
+                                        const cyc_bump_options* options,
+                                        cyc_free_parameter* params, int capacity, int* count) {
+  const char* fn = "cyc_optimize_pcurve_bump_parameters";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(a);
+    REQUIRE(b);
+    REQUIRE(count);
+#if CYCLIDE_HAVE_CERES
+    RingedBlendOptions B;
+    if (Outcome e = pcurve_blend_options_of(fn, blend, start, B); e.status) return e;
+    optim::FreeParameters D;
+    if (Status st = optim::describe_bump_parameters(jet_of(*a), jet_of(*b), B,
+                                                    optim::BumpObjective(),
+                                                    bump_options_of(options), D);
+        st != Status::ok)
+      return from_core(fn, st);
+    return emit_parameters(fn, D, params, capacity, count);
+#else
+    (void)blend; (void)start; (void)options; (void)params; (void)capacity;
     return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
 #endif
   });

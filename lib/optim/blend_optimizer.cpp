@@ -667,28 +667,20 @@ Status basis_at(int K, const RationalCurve* unit, double t, Basis* out) {
   return Status::ok;
 }
 
-}  // namespace
-
-Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end, int K,
-                      double t0, double t1, const BlendObjective& objective,
-                      const BlendOptions& options, Surface& out, BlendEnd* start_out,
-                      BlendEnd* end_out, BlendSummary& summary, double* bad_t) {
-  const auto clock0 = std::chrono::steady_clock::now();
-  if (!start.surface || !end.surface) return Status::null_argument;
-  if (Status st = check_inputs(kind, K, objective, options); st != Status::ok) return st;
-
-  // The start: the given jets, else the lambdas scaled (within the bounds).
-  double jet0[2][kMaxBlendOrder] = {};
+// The start: the given jets, else the lambdas scaled by 1/2, 2, 1/4, 4
+// (within the bounds): the first that builds a valid blend, in jet / S0.
+Status start_jets(BlendKind kind, const BlendEnd& start, const BlendEnd& end, int K, double t0,
+                  double t1, const BlendOptions& options, double (&jet0)[2][kMaxBlendOrder],
+                  double (&jet)[2][kMaxBlendOrder], Surface& S0, double* bad_t) {
+  for (auto& row : jet0)
+    for (double& x : row) x = 0;
   blend_jet(start, 0, K, jet0[0]);
   blend_jet(end, 1, K, jet0[1]);
   for (int e = 0; e < 2; ++e)
     for (int m = 0; m < K; ++m)
       if (!input_ok(jet0[e][m])) return Status::not_finite;
   if (jet0[0][0] == 0 || jet0[1][0] == 0) return Status::invalid_argument;
-  Surface S0;
-  double jet[2][kMaxBlendOrder];
   Status first = Status::ok;
-  bool found = false;
   for (double f : {1.0, 0.5, 2.0, 0.25, 4.0}) {
     if (f < options.lambda_min_ratio || f > options.lambda_max_ratio) continue;
     std::copy(&jet0[0][0], &jet0[0][0] + 2 * kMaxBlendOrder, &jet[0][0]);
@@ -699,10 +691,7 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
     if (jet[0][0] == 0 || jet[1][0] == 0) continue;
     double bad = 0;
     const Status st = build(kind, start, end, jet, K, t0, t1, S0, &bad, nullptr, nullptr);
-    if (st == Status::ok) {
-      found = true;
-      break;
-    }
+    if (st == Status::ok) return Status::ok;
     if (f == 1.0) {
       first = st;
       if (bad_t) *bad_t = bad;
@@ -713,14 +702,66 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
         st != Status::degenerate_circle_parameter)
       return st;
   }
-  if (!found) return first;
+  return first;
+}
+
+// The boxes of the jets (SPEC §8e): |phi'| in [min, max] |lambda_0| with
+// lambda_0's sign, |phi^(m)| <= higher_bound |lambda_0|; starts clamped in.
+// lambda = 0 means the default +-1: the bounds keep it out (min_ratio
+// |lambda_0| underflows to 0 for a denormal lambda_0).
+void jet_parameters(const double (&jet0)[2][kMaxBlendOrder],
+                    const double (&jet)[2][kMaxBlendOrder], int free, const BlendOptions& options,
+                    FreeParameters& out) {
+  constexpr double tiny = std::numeric_limits<double>::denorm_min();
+  out = FreeParameters();
+  for (int e = 0; e < 2; ++e) {
+    const double l0 = jet0[e][0], a = std::abs(l0);
+    for (int m = 0; m < free; ++m) {
+      FreeParameter q;
+      q.role = ParameterRole::jet;
+      q.index = e;
+      q.order = m + 1;
+      if (m == 0) {
+        q.lower = l0 > 0 ? std::max(options.lambda_min_ratio * a, tiny)
+                         : -options.lambda_max_ratio * a;
+        q.upper = l0 > 0 ? options.lambda_max_ratio * a
+                         : std::min(-options.lambda_min_ratio * a, -tiny);
+      } else {
+        q.lower = -options.higher_bound * a;
+        q.upper = options.higher_bound * a;
+      }
+      q.start = q.value = std::min(std::max(jet[e][m], q.lower), q.upper);
+      out.add(q);
+    }
+  }
+}
+
+int free_orders(int K, const BlendOptions& options) {
+  return options.free_orders > 0 ? options.free_orders : std::min(K, 2);
+}
+
+}  // namespace
+
+Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end, int K,
+                      double t0, double t1, const BlendObjective& objective,
+                      const BlendOptions& options, Surface& out, BlendEnd* start_out,
+                      BlendEnd* end_out, BlendSummary& summary, double* bad_t) {
+  const auto clock0 = std::chrono::steady_clock::now();
+  if (!start.surface || !end.surface) return Status::null_argument;
+  if (Status st = check_inputs(kind, K, objective, options); st != Status::ok) return st;
+
+  double jet0[2][kMaxBlendOrder], jet[2][kMaxBlendOrder];
+  Surface S0;
+  if (Status st = start_jets(kind, start, end, K, t0, t1, options, jet0, jet, S0, bad_t);
+      st != Status::ok)
+    return st;
 
   // The problem.
   Problem P;
   P.kind = kind;
   P.K = K;
   P.count = kind == BlendKind::canal ? 2 : 3;
-  P.free = options.free_orders > 0 ? options.free_orders : std::min(K, 2);
+  P.free = free_orders(K, options);
   P.t0 = t0;
   P.t1 = t1;
   std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &P.jet0[0][0]);
@@ -765,21 +806,13 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   // Bounds, the start point (clamped into them) and the fairness
   // normalizer: the start blend's fairness integral F0, so that the
   // fairness term is weight * F / F0 / 2 (1/2 the weight at the start).
-  // lambda = 0 means the default +-1: the bounds keep it out (min_ratio
-  // |lambda_0| underflows to 0 for a denormal lambda_0).
-  std::vector<double> x(size_t(2 * P.free)), lo(x.size()), hi(x.size());
-  constexpr double tiny = std::numeric_limits<double>::denorm_min();
-  for (int e = 0; e < 2; ++e) {
-    const double l0 = jet0[e][0], a = std::abs(l0);
-    const size_t b = size_t(e * P.free);
-    lo[b] = l0 > 0 ? std::max(options.lambda_min_ratio * a, tiny) : -options.lambda_max_ratio * a;
-    hi[b] = l0 > 0 ? options.lambda_max_ratio * a : std::min(-options.lambda_min_ratio * a, -tiny);
-    for (int m = 1; m < P.free; ++m) {
-      lo[b + m] = -options.higher_bound * a;
-      hi[b + m] = options.higher_bound * a;
-    }
-    for (int m = 0; m < P.free; ++m)
-      x[b + m] = std::min(std::max(jet[e][m], lo[b + m]), hi[b + m]);
+  FreeParameters params;
+  jet_parameters(jet0, jet, P.free, options, params);
+  std::vector<double> x(size_t(params.count)), lo(x.size()), hi(x.size());
+  for (int i = 0; i < params.count; ++i) {
+    lo[size_t(i)] = params.p[i].lower;
+    hi[size_t(i)] = params.p[i].upper;
+    x[size_t(i)] = params.p[i].start;
   }
   Terms terms0;
   double cost0 = 0;
@@ -830,6 +863,9 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
     R.termination = BlendTermination::reverted;
   }
   R.final_cost = cost1;
+  R.parameters = params;
+  const std::vector<double>& chosen = R.termination == BlendTermination::reverted ? x_start : x;
+  for (int i = 0; i < params.count; ++i) R.parameters.p[i].value = chosen[size_t(i)];
   R.fairness = terms1.fairness;
   R.regularity = terms1.regularity;
   R.targets = terms1.targets;
@@ -839,6 +875,20 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   if (start_out) *start_out = s1;
   if (end_out) *end_out = e1;
   summary = R;
+  return Status::ok;
+}
+
+Status describe_blend_parameters(BlendKind kind, const BlendEnd& start, const BlendEnd& end,
+                                 int K, double t0, double t1, const BlendOptions& options,
+                                 FreeParameters& out, double* bad_t) {
+  if (!start.surface || !end.surface) return Status::null_argument;
+  if (Status st = check_inputs(kind, K, BlendObjective(), options); st != Status::ok) return st;
+  double jet0[2][kMaxBlendOrder], jet[2][kMaxBlendOrder];
+  Surface S0;
+  if (Status st = start_jets(kind, start, end, K, t0, t1, options, jet0, jet, S0, bad_t);
+      st != Status::ok)
+    return st;
+  jet_parameters(jet0, jet, free_orders(K, options), options, out);
   return Status::ok;
 }
 

@@ -72,6 +72,36 @@ struct BlendOptions {
   double parameter_tolerance = 1e-8;
 };
 
+// The common description of a blend's free parameters (issue 4): every
+// optimizer of the library states its unknowns as FreeParameters — what
+// each one is, its box and its start — and reports the chosen values.
+// The families so far: the ends' jets phi', phi'', ... of the canal and
+// ringed blends (seed 000 §9, below) and the directrix bump w, tau of the
+// P-curve blend (seed 001 §5, bump_optimizer.hpp). (The reparameterization
+// factors mu and the family parameters alpha of the brief are not free
+// parameters of any blend built here: mu is fixed by the Hermite data's
+// jets — those are the jet parameters — and no blend family with alpha has
+// an optimizer yet.)
+enum class ParameterRole : int {
+  jet = 0,                // phi^(order) at end `index` (0 start, 1 end); order 1 = lambda
+  bump_displacement = 1,  // w_index (index 0, 1, 2) of d* = d + w b(t; tau)
+  bump_position = 2,      // tau
+};
+struct FreeParameter {
+  ParameterRole role = ParameterRole::jet;
+  int index = 0;
+  int order = 0;
+  double lower = 0.0, upper = 0.0;  // the box; lower == upper: held fixed
+  double start = 0.0;               // the start value (inside the box)
+  double value = 0.0;               // the chosen value (the start before solving)
+};
+constexpr int kMaxFreeParameters = 2 * kMaxBlendOrder;
+struct FreeParameters {
+  FreeParameter p[kMaxFreeParameters];
+  int count = 0;
+  void add(const FreeParameter& q) { p[count++] = q; }
+};
+
 enum class BlendTermination : int {
   converged = 0,        // a tolerance was met (function, gradient, parameter as Ceres')
   iteration_limit = 1,  // max_iterations reached (the best point is kept)
@@ -88,6 +118,7 @@ struct BlendSummary {
   double fairness = 0.0, regularity = 0.0, targets = 0.0, obstacles = 0.0;
   double length_scale = 0.0;  // L
   double fairness_scale = 0.0;  // the start blend's fairness integral (normalizer)
+  FreeParameters parameters;    // the unknowns: boxes, starts and chosen values
 };
 
 // Optimizes the jets of start and end (their lambda and phi[] are the start
@@ -104,6 +135,14 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
                       double t0, double t1, const BlendObjective& objective,
                       const BlendOptions& options, Surface& out, BlendEnd* start_out,
                       BlendEnd* end_out, BlendSummary& summary, double* bad_t = nullptr);
+
+// The free parameters optimize_blend would solve for (its start search
+// included: the first valid of the lambdas scaled by 1, 1/2, 2, 1/4, 4),
+// with their boxes and starts; no solve. Statuses of optimize_blend's
+// validation and start search.
+Status describe_blend_parameters(BlendKind kind, const BlendEnd& start, const BlendEnd& end,
+                                 int K, double t0, double t1, const BlendOptions& options,
+                                 FreeParameters& out, double* bad_t = nullptr);
 
 }  // namespace optim
 }  // namespace v0

@@ -149,7 +149,44 @@ double evaluate(const BumpCost& f, const double* w, double tau, double* deviance
   return all;
 }
 
+// The unknowns (issue 4's common description): w's components in
+// [-w_bound L, w_bound L], tau in [tau_min, tau_max] or held at the start's
+// (lower = upper); starts clamped into the boxes.
+void bump_parameters(const DirectrixBump& bump, const BumpOptions& options, double L,
+                     FreeParameters& out) {
+  out = FreeParameters();
+  for (int j = 0; j < 3; ++j) {
+    FreeParameter q;
+    q.role = ParameterRole::bump_displacement;
+    q.index = j;
+    q.lower = -options.w_bound * L;
+    q.upper = options.w_bound * L;
+    q.start = q.value = std::min(std::max(bump.w[j], q.lower), q.upper);
+    out.add(q);
+  }
+  FreeParameter t;
+  t.role = ParameterRole::bump_position;
+  t.lower = options.free_tau ? options.tau_min : bump.tau;
+  t.upper = options.free_tau ? options.tau_max : bump.tau;
+  t.start = t.value = std::min(std::max(bump.tau, t.lower), t.upper);
+  out.add(t);
+}
+
+double ends_length(const RingedJet& a, const RingedJet& b) {
+  return (a.d - b.d).norm() + std::abs(a.rho) + std::abs(b.rho);
+}
+
 }  // namespace
+
+Status describe_bump_parameters(const RingedJet& a, const RingedJet& b,
+                                const RingedBlendOptions& blend, const BumpObjective& objective,
+                                const BumpOptions& options, FreeParameters& out) {
+  if (Status st = check(blend, objective, options); st != Status::ok) return st;
+  const double L = ends_length(a, b);
+  if (!(L > 0) || !std::isfinite(L)) return Status::invalid_argument;
+  bump_parameters(blend.bump, options, L, out);
+  return Status::ok;
+}
 
 Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
                             const RingedBlendOptions& blend, const BumpObjective& objective,
@@ -159,14 +196,14 @@ Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
   if (Status st = check(blend, objective, options); st != Status::ok) return st;
   std::vector<Node> nodes;
   if (Status st = sample_nodes(a, b, blend, objective.nodes, nodes); st != Status::ok) return st;
-  const double L = (a.d - b.d).norm() + std::abs(a.rho) + std::abs(b.rho);
+  const double L = ends_length(a, b);
   if (!(L > 0) || !std::isfinite(L)) return Status::invalid_argument;
   const BumpKind kind = blend.bump.kind;
   const bool free_tau = options.free_tau;
-  double w[3] = {blend.bump.w.x(), blend.bump.w.y(), blend.bump.w.z()};
-  double tau = blend.bump.tau;
-  if (free_tau) tau = std::min(std::max(tau, options.tau_min), options.tau_max);
-  for (double& x : w) x = std::min(std::max(x, -options.w_bound * L), options.w_bound * L);
+  FreeParameters params;
+  bump_parameters(blend.bump, options, L, params);
+  double w[3] = {params.p[0].start, params.p[1].start, params.p[2].start};
+  double tau = params.p[3].start;
   BumpCost f{&nodes, &objective, kind, L, free_tau ? -1.0 : blend.bump.tau};
   const double w0[3] = {w[0], w[1], w[2]};
   const double tau0 = tau;
@@ -185,12 +222,12 @@ Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
       new BumpCost(f), f.residual_count());
   problem.AddResidualBlock(cost, nullptr, w, &tau);
   for (int j = 0; j < 3; ++j) {
-    problem.SetParameterLowerBound(w, j, -options.w_bound * L);
-    problem.SetParameterUpperBound(w, j, options.w_bound * L);
+    problem.SetParameterLowerBound(w, j, params.p[j].lower);
+    problem.SetParameterUpperBound(w, j, params.p[j].upper);
   }
   if (free_tau) {
-    problem.SetParameterLowerBound(&tau, 0, options.tau_min);
-    problem.SetParameterUpperBound(&tau, 0, options.tau_max);
+    problem.SetParameterLowerBound(&tau, 0, params.p[3].lower);
+    problem.SetParameterUpperBound(&tau, 0, params.p[3].upper);
   } else {
     problem.SetParameterBlockConstant(&tau);
   }
@@ -228,6 +265,9 @@ Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
     sum.termination = BlendTermination::reverted;
   }
   sum.final_cost = final_cost;
+  sum.parameters = params;
+  for (int j = 0; j < 3; ++j) sum.parameters.p[j].value = best.bump.w[j];
+  sum.parameters.p[3].value = best.bump.tau;
   sum.fairness = dev;
   sum.obstacles = final_cost - dev;
   sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock0).count();

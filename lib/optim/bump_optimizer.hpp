@@ -54,6 +54,13 @@ Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
                             const BumpOptions& options, Surface (&pieces)[2], int& count,
                             DirectrixBump& chosen, BlendSummary& summary);
 
+// The free parameters optimize_pcurve_bump solves for (w's components and
+// tau; tau's box is [tau, tau] when it is not free), boxes and starts; no
+// solve. Statuses of its validation.
+Status describe_bump_parameters(const RingedJet& a, const RingedJet& b,
+                                const RingedBlendOptions& blend, const BumpObjective& objective,
+                                const BumpOptions& options, FreeParameters& out);
+
 }  // namespace optim
 }  // namespace v0
 }  // namespace cyclide

@@ -1019,6 +1019,46 @@ CYC_API int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
                                      int* count, cyc_directrix_bump* chosen,
                                      cyc_optimize_summary* summary);
 
+/* Issue 4: the common description of the optimizers' free parameters. Each
+ * cyc_optimize_* entry point solves for a list of these; the _parameters
+ * queries list them (boxes and starts) for the same inputs without
+ * solving. The chosen values are what the optimizer returns (the ends'
+ * lambda and phi[], the chosen bump). */
+#define CYC_PARAMETER_JET 0               /* phi^(order) at end `index` (0 start, 1 end);
+                                             order 1 = lambda */
+#define CYC_PARAMETER_BUMP_DISPLACEMENT 1 /* w[index] of the directrix bump */
+#define CYC_PARAMETER_BUMP_POSITION 2     /* tau of the directrix bump */
+typedef struct cyc_free_parameter {
+  int role;            /* CYC_PARAMETER_* */
+  int index;           /* the end or the component */
+  int order;           /* the derivative order (CYC_PARAMETER_JET), else 0 */
+  double lower, upper; /* the box; lower == upper: held fixed */
+  double start;        /* the start value (inside the box) */
+} cyc_free_parameter;
+
+/** The free parameters of cyc_optimize_blend for these inputs (its start
+ *  search included). params NULL: only *count (a size query); else up to
+ *  capacity entries and *count. CYC_E_BUFFER_TOO_SMALL if capacity < the
+ *  count, then cyc_optimize_blend's validation and start-search statuses.
+ *  Optimizer tier; CYC_E_UNSUPPORTED without Ceres. Nothing is written on
+ *  error. */
+CYC_API int cyc_optimize_blend_parameters(cyc_context* ctx, int kind,
+                                          const cyc_blend_end* start, const cyc_blend_end* end,
+                                          int K, double t0, double t1,
+                                          const cyc_optimize_options* options,
+                                          cyc_free_parameter* params, int capacity, int* count);
+
+/** The free parameters of cyc_optimize_pcurve_bump (w's components in
+ *  [-w_bound L, w_bound L], tau in [tau_min, tau_max] or held), as
+ *  cyc_optimize_blend_parameters. */
+CYC_API int cyc_optimize_pcurve_bump_parameters(cyc_context* ctx, const cyc_ringed_jet* a,
+                                                const cyc_ringed_jet* b,
+                                                const cyc_pcurve_blend_options* blend,
+                                                const cyc_directrix_bump* start,
+                                                const cyc_bump_options* options,
+                                                cyc_free_parameter* params, int capacity,
+                                                int* count);
+
 #ifdef __cplusplus
 }
 #endif
