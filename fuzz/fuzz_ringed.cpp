@@ -561,7 +561,7 @@ void op_nway(Input& in, Ctx& c) {
     const double rows[6] = {P[0] - P[3], P[1] - P[4], P[2] - P[5], P[3], P[4], P[5]};
     cyc_curve *d = nullptr, *nc = nullptr;
     c.check("cyc_curve_create_polynomial", cyc_curve_create_polynomial(c.ctx, 1, rows, 3, &d));
-    c.check("cyc_curve_create_point", cyc_curve_create_point(c.ctx, P + 6, &nc));
+    c.check("cyc_curve_create_polynomial", cyc_curve_create_polynomial(c.ctx, 0, P + 6, 3, &nc));
     if (d && nc) {
       const int s = cyc_ringed_dnr_create(c.ctx, d, nc, 0, &rho, 0, nullptr, nullptr, nullptr, 0,
                                           1, &R[i], nullptr);

@@ -2154,7 +2154,7 @@ def ringed_seeds():
     seeds["seed-nway"] = RingedEncoder([
         lambda e: e.nway(ex62, center=2, s=s69, r=2.6, lambdas=[0.1875] * 3),
         lambda e: e.nway(ex62, center=2, s=s69, r=2.6, lambdas=[0.25] * 3),
-        lambda e: e.nway(ex62, lambdas=[0.25] * 3, side=1, tau=0.5),
+        lambda e: e.nway(ex62, lambdas=[0.125] * 3, side=1, tau=0.5),
         lambda e: e.nway([x[:4] + (2,) for x in ex62], center=1, alpha=0.01,
                          lambdas=[0.125] * 3, require_disjoint=False),
         lambda e: e.nway(ex62, n=2),

@@ -80,8 +80,9 @@ Outcome explain_failure(const char* fn, Status s, const NwayReport& R, const Nwa
   const NwaySphere& S = R.sphere;
   switch (s) {
     case Status::intersecting_circles:
-      return fail(int(s), "%s: joining circles c_%d and c_%d meet (angular gap %.3g rad)", fn,
-                  S.worst_i, S.worst_j, S.min_gap);
+      return fail(int(s), "%s: joining circles c_%d and c_%d (ends %d and %d) meet (angular "
+                  "gap %.3g rad)", fn, S.worst_i + 1, S.worst_j + 1, S.worst_i, S.worst_j,
+                  S.min_gap);
     case Status::collinear_points:
       return fail(int(s), "%s: the end centers are collinear or coincident (no incentre)", fn);
     case Status::bad_domain:
