@@ -235,8 +235,19 @@ TEST(NwayExample62, BlendsAreC1AtBothEnds) {
       for (int i = 0; i < 3; ++i) EXPECT_EQ(count[i], tau == 0 ? 1 : 2);
       expect_c1(ends, u, 3, B, count, rep, 1e-9);
       // The sphere's n points along the blend's travel (into the sphere)
-      // like R_i's n = d' does at its end.
+      // like R_i's n = d' does at its end; the blend's centers approach s
+      // monotonically (no turn-back: the facing side).
       for (int i = 0; i < 3; ++i) {
+        double last = HUGE_VAL;
+        for (int k = 0; k < count[i]; ++k)
+          for (int j = 0; j <= 64; ++j) {
+            const double t = B[i][k].u0 + (B[i][k].u1 - B[i][k].u0) * j / 64.0;
+            RingedJet K;
+            ASSERT_EQ(ringed_jet(B[i][k], t, K), Status::ok);
+            const double dist = (K.d - rep.sphere.s).norm();
+            EXPECT_LE(dist, last + 1e-12) << "blend " << i << " t " << t;
+            last = dist;
+          }
         EXPECT_GT(rep.sphere_jet[i].n.dot(rep.sphere_jet[i].dd), 0);
         EXPECT_LT(rep.sphere_jet[i].n.dot(rep.sphere.n_star[i]), 0);
       }
