@@ -139,7 +139,7 @@ int cyc_blend_ringed_nway(cyc_context* ctx, const cyc_surface* const* ends, cons
                          kMaxNwayEnds));
     const Surface* S[kMaxNwayEnds] = {};
     for (int i = 0; i < n; ++i) {
-      if (!ends[i]) return finish(fail(CYC_E_NULL_ARGUMENT, "%s: ends[%d] is NULL", fn, i));
+      if (!ends[i]) return fail(CYC_E_NULL_ARGUMENT, "%s: ends[%d] is NULL", fn, i);
       S[i] = &ends[i]->surface;
     }
     NwayOptions o;

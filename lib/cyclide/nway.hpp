@@ -87,7 +87,9 @@ RingedJet nway_sphere_jet(const Vec3d& s, double r, const Vec3d& n_star, double 
 // the incentre (64) and the plane of (63) are undefined); bad_domain for a
 // lambda outside (0, 1) or r outside (0, bound) (the sphere would contain an
 // end center, (65)); intersecting_circles when two joining circles meet and
-// options.require_disjoint (out is still written then, for the report).
+// options.require_disjoint; numerical_overflow if s leaves 1e100. out is
+// written on success, bad_domain and intersecting_circles (for the report),
+// untouched otherwise.
 Status nway_sphere(const RingedJet* ends, int n, const NwayOptions& options, NwaySphere& out);
 
 struct NwayReport {
@@ -105,8 +107,9 @@ struct NwayReport {
 // unit travel direction signed like n_i . d_i' at R_i's end (n_i . m_i if
 // that is ~0), so that n does not turn over along B_i. Statuses of
 // nway_sphere, ringed_jet (bad_domain for end_u outside [u0, u1]) and
-// make_ringed_pcurve_blend (with *bad_u; report->failed_end says which).
-// Nothing is written to blends/count on error; report (may be null) is
+// make_ringed_pcurve_blend (with *bad_u; report->failed_end says which;
+// its not_finite — data valid, a jet beyond 1e100 — as numerical_overflow,
+// also for end jets beyond 1e100). Nothing is written to blends/count on error; report (may be null) is
 // filled as far as the construction got.
 Status make_ringed_nway_blend(const Surface* const* ends, const double* end_u, int n,
                               const NwayOptions& options, Surface (&blends)[kMaxNwayEnds][2],

@@ -221,6 +221,11 @@ Status make_ringed_nway_blend(const Surface* const* ends, const double* end_u, i
       rep.failed_end = i;
       return st;
     }
+    // A surface's jet beyond 1e100: the data were valid, the values are not.
+    if (!jet_ok(rep.end_jet[i])) {
+      rep.failed_end = i;
+      return Status::numerical_overflow;
+    }
   }
   if (Status st = nway_sphere(rep.end_jet, n, o, rep.sphere); st != Status::ok) return st;
   const NwaySphere& S = rep.sphere;
@@ -237,7 +242,9 @@ Status make_ringed_nway_blend(const Surface* const* ends, const double* end_u, i
     rep.v[i] = bo.v;
     if (Status st = make_ringed_pcurve_blend(a, b, bo, B[i], m[i], bad_u); st != Status::ok) {
       rep.failed_end = i;
-      return st;
+      // Validated data whose sphere jet leaves 1e100 (r ~ 1e100): overflow,
+      // not_finite stays reserved for non-finite inputs.
+      return st == Status::not_finite ? Status::numerical_overflow : st;
     }
   }
   for (int i = 0; i < n; ++i) {
