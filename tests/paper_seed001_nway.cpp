@@ -255,6 +255,60 @@ TEST(NwayExample62, BlendsAreC1AtBothEnds) {
   }
 }
 
+// (66)-(67) as printed (side = printed) also gives C^1 blends: they cross
+// the sphere to the far circle and arrive moving back towards R_i.
+TEST(NwayExample62, PrintedSideBlendsAreC1) {
+  Surface R[3];
+  example62(R);
+  const Surface* ends[3] = {&R[0], &R[1], &R[2]};
+  const double u[3] = {1, 1, 1};
+  NwayOptions o = example62_options();
+  o.side = NwaySide::printed;
+  for (double& l : o.lambda) l = 0.19;
+  Surface B[kMaxNwayEnds][2];
+  int count[kMaxNwayEnds] = {};
+  NwayReport rep;
+  ASSERT_EQ(make_ringed_nway_blend(ends, u, 3, o, B, count, &rep), Status::ok);
+  expect_c1(ends, u, 3, B, count, rep, 1e-9);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_LT((rep.sphere_jet[i].d - (o.s - 0.62 * 2.6 * rep.sphere.n_star[i])).norm(), 1e-12);
+    EXPECT_GT(rep.sphere_jet[i].dd.dot(rep.sphere.n_star[i]), 0);  // towards R_i
+  }
+}
+
+// A 5-way blend (the paper's Fig. 11 has one; no data given): five normal
+// ringed ends around a ring, tilted out of its plane, the automatic sphere;
+// axes 72 deg apart, so lambda = 0.08 (caps of 32.9 deg) keeps the circles
+// apart.
+TEST(NwayBlend, FiveWayAroundARing) {
+  Surface R[5];
+  const Surface* ends[5];
+  const double u[5] = {1, 1, 1, 1, 1};
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2 * kPi * i / 5;
+    const Vec3d radial(std::cos(a), std::sin(a), 0);
+    const Vec3d P = 6 * radial + Vec3d(0, 0, 1), T = -3 * radial + Vec3d(0, 0, 0.5 + 0.1 * i);
+    // d(t) = P + (t - 1) T + (t - 1)^2 w: a quadratic directrix, n = d'.
+    const Vec3d w = 0.5 * radial.cross(Vec3d::UnitZ());
+    const Vec3d c0 = P - T + w, c1 = T - 2 * w, c2 = w;
+    const double dc[9] = {c0.x(), c0.y(), c0.z(), c1.x(), c1.y(), c1.z(), c2.x(), c2.y(), c2.z()};
+    normal_ringed(2, dc, poly({0.5, 0.1 * (i % 3)}), R[i]);
+    ends[i] = &R[i];
+  }
+  NwayOptions o;
+  for (double& l : o.lambda) l = 0.08;
+  Surface B[kMaxNwayEnds][2];
+  int count[kMaxNwayEnds] = {};
+  NwayReport rep;
+  double bad = NAN;
+  ASSERT_EQ(make_ringed_nway_blend(ends, u, 5, o, B, count, &rep, &bad), Status::ok)
+      << "failed end " << rep.failed_end << " at " << bad;
+  EXPECT_GT(rep.sphere.min_gap, 0);
+  EXPECT_LT((rep.sphere.y - Vec3d(0, 0, 1)).norm(), 1e-12);  // the centroid
+  EXPECT_GT(rep.sphere.s.z(), 1);  // tangents tilted up lift s
+  expect_c1(ends, u, 5, B, count, rep, 1e-9);
+}
+
 // The ends of R_i taken at u = 0 (reversed jets) give the same geometry.
 TEST(NwayBlend, EndAtLowerParameterIsReversed) {
   Surface R[3];
