@@ -55,7 +55,7 @@ struct NwaySphere {
   Vec3d y = Vec3d::Zero();  // (64) the incentre (n = 3); the centroid (n > 3)
   Vec3d N = Vec3d::Zero();  // (63) the normal: Newell's sum_k d_k x d_{k+1}
                             // (= (d1 - d2) x (d1 - d3) for n = 3)
-  double alpha = 0.0;       // the alpha used (NaN when s was given)
+  double alpha = 0.0;       // the alpha used (0 when s was given)
   Vec3d s = Vec3d::Zero();
   double r = 0.0;
   double bound = 0.0;       // (65): min_i |d_i - s|; r in (0, bound)

@@ -85,7 +85,7 @@ Status sphere_center(const RingedJet* ends, int n, const NwayOptions& o, NwaySph
   }
   switch (o.center) {
     case NwayCenter::given:
-      S.alpha = NAN;
+      S.alpha = 0.0;  // not used
       S.s = o.s;
       return Status::ok;
     case NwayCenter::alpha:

@@ -767,7 +767,7 @@ CYC_API void cyc_nway_options_init(cyc_nway_options* options);
 typedef struct cyc_nway_report {
   double y[3];        /* (64): the incentre (n = 3) or centroid (n > 3) of the end centers */
   double normal[3];   /* (63): N = sum_k d_k x d_k+1 (= (d1 - d2) x (d1 - d3) for n = 3) */
-  double alpha;       /* the alpha used (NaN for CENTER_GIVEN) */
+  double alpha;       /* the alpha used (0 for CENTER_GIVEN) */
   double s[3], r;     /* the sphere */
   double bound;       /* (65): min |d_i - s|; r in (0, bound) */
   double clear_bound; /* min (|d_i - s| - rho_i): below it the end circles miss the sphere */
