@@ -26,6 +26,7 @@
 #include "cyclide/darboux.hpp"  // the core, for BM_DcmcCore and the core value
 #include "cyclide/darboux_lines.hpp"  // the core, for BM_ParabolicLinesCore
 #include "cyclide/blend.hpp"  // the core, for BM_BlendRinged / BM_BlendCanal
+#include "cyclide/nway.hpp"   // the core, for BM_NwayBlend
 
 std::uint64_t cyc_bench_alloc_count();  // alloc_hook.cpp
 bool cyc_bench_alloc_hooked();          // false: allocations are not counted
@@ -902,7 +903,70 @@ void BM_OptimizeBlend(benchmark::State& state, int kind) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Seed 001 §6: the 3-way blend of Example 6.2 (ends (68) as normal ringed
+// surfaces, sphere (69), lambda_i = 0.19 so that the joining circles are
+// disjoint; degree-6 blends) in the core: the sphere, the circle test and
+// three make_ringed_pcurve_blend calls per iteration. Allocation-free.
+void BM_NwayBlend(benchmark::State& state) {
+  using namespace cyclide;
+  auto normal_ringed = [](const double* dc, const CurvePoly& rho, Surface& S) {
+    double nc[9];
+    for (int k = 0; k < 9; ++k) nc[k] = (k / 3 + 1) * dc[k + 3];
+    RationalCurve d, n;
+    if (make_polynomial_curve(3, dc, d) != Status::ok ||
+        make_polynomial_curve(2, nc, n) != Status::ok)
+      return false;
+    // The automatic field, else Example 3.3's (R_3's projection along e3
+    // has sigma = |6t^2 - 10t|, zero at t = 0).
+    RingedFieldOptions fo;
+    if (make_ringed_dnr(d, n, rho, CurvePoly(1.0), fo, nullptr, 0.0, 1.0, S) == Status::ok)
+      return true;
+    fo.method = RingedFieldMethod::quadratic;
+    for (fo.which = 0; fo.which < 2; ++fo.which)
+      if (make_ringed_dnr(d, n, rho, CurvePoly(1.0), fo, nullptr, 0.0, 1.0, S) == Status::ok)
+        return true;
+    return false;
+  };
+  const double d1[12] = {-9, -7, 0, 12, 4, 0, -23, 0, 0, 14, 0, 0};
+  const double d2[12] = {6, -8, 0, 4, 4, 0, 0, 3, 0, -4, -2, 0};
+  const double d3[12] = {0, 8, -8, 0, 0, 4, 0, -5, -3, 0, 2, 2};
+  const double r1[2] = {4.0 / 6, 1.0 / 6}, r2[3] = {1, 0, -0.5}, r3[2] = {9.0 / 6, -4.0 / 6};
+  CurvePoly p1, p2, p3;
+  p1.assign(r1, 1);
+  p2.assign(r2, 2);
+  p3.assign(r3, 1);
+  static Surface R[3];
+  if (!normal_ringed(d1, p1, R[0]) || !normal_ringed(d2, p2, R[1]) ||
+      !normal_ringed(d3, p3, R[2])) {
+    state.SkipWithError("Example 6.2's ends not built");
+    return;
+  }
+  const Surface* ends[3] = {&R[0], &R[1], &R[2]};
+  const double u[3] = {1, 1, 1};
+  NwayOptions o;
+  o.center = NwayCenter::given;
+  o.s = Vec3d(0.5, 0.3, -0.25);
+  o.r = 2.6;
+  for (double& l : o.lambda) l = 0.19;
+  static Surface B[kMaxNwayEnds][2];
+  int count[kMaxNwayEnds] = {};
+  Status bad = Status::ok;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    const Status st = make_ringed_nway_blend(ends, u, 3, o, B, count);
+    if (st != Status::ok) bad = st;
+    benchmark::DoNotOptimize(B);
+  }
+  allocs.finish();
+  if (bad != Status::ok) {
+    state.SkipWithError(status_name(bad));
+    return;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 BENCHMARK(BM_BlendRinged)->Arg(1)->Arg(2)->Arg(3);
+BENCHMARK(BM_NwayBlend);
 BENCHMARK(BM_BlendCanal)->Arg(2)->Arg(3);
 BENCHMARK(BM_BlendRingedCapi)->Arg(2);
 BENCHMARK(BM_DerivativesU)->Arg(1)->Arg(2)->Arg(3);

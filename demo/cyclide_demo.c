@@ -652,6 +652,77 @@ static void ringed_dnr_demos(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_curve_destroy(ctx, phn);
 }
 
+/* (d, n, rho) on [0, 1] with the automatic field, else Example 3.3's
+ * (quadratic n): the automatic route may project along an axis where sigma
+ * vanishes in [0, 1] (Example 6.2's R_3: |n x e3| = |6t^2 - 10t|). */
+static int ringed_any_field(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n, int rho_deg,
+                            const double* rho, cyc_surface** out) {
+  cyc_ringed_field_options o;
+  int st;
+  cyc_ringed_field_options_init(&o);
+  st = cyc_ringed_dnr_create(ctx, d, n, rho_deg, rho, 0, NULL, &o, NULL, 0, 1, out, NULL);
+  if (st == CYC_OK) return st;
+  o.method = CYC_RINGED_FIELD_QUADRATIC;
+  for (o.which = 0; o.which < 2; ++o.which) {
+    st = cyc_ringed_dnr_create(ctx, d, n, rho_deg, rho, 0, NULL, &o, NULL, 0, 1, out, NULL);
+    if (st == CYC_OK) return st;
+  }
+  return st;
+}
+
+/* Seed 001 §6, Example 6.2: the 3-way blend of the normal ringed surfaces
+ * (68) through the sphere (69); lambda_i = 0.19 (at the paper's 0.2 the
+ * joining circles c_1 and c_3 meet: SPEC.md §8f.6), facing side. */
+static void nway_demo(cyc_context* ctx, const char* dir, FILE* report) {
+  const double d[3][12] = {{-9, -7, 0, 12, 4, 0, -23, 0, 0, 14, 0, 0},
+                           {6, -8, 0, 4, 4, 0, 0, 3, 0, -4, -2, 0},
+                           {0, 8, -8, 0, 0, 4, 0, -5, -3, 0, 2, 2}};
+  const double rho[3][3] = {{4.0 / 6, 1.0 / 6, 0}, {1, 0, -0.5}, {9.0 / 6, -4.0 / 6, 0}};
+  const int rho_deg[3] = {1, 2, 1};
+  const double u[3] = {1, 1, 1}, s69[3] = {0.5, 0.3, -0.25};
+  const char* names[3] = {"ringed_ex62_R1", "ringed_ex62_R2", "ringed_ex62_R3"};
+  const char* blend_names[3] = {"ringed_ex62_B1", "ringed_ex62_B2", "ringed_ex62_B3"};
+  cyc_surface* R[3];
+  const cyc_surface* ends[3];
+  cyc_surface *B[6], *sphere;
+  int counts[3], i, k;
+  cyc_nway_options o;
+  cyc_nway_report rep;
+  fprintf(report, "\nn-way blend (seed 001 sec. 6): Example 6.2, s = (0.5, 0.3, -0.25), r = 2.6\n");
+  for (i = 0; i < 3; ++i) {
+    double nc[9];
+    cyc_curve *dc, *ncv;
+    for (k = 0; k < 9; ++k) nc[k] = (k / 3 + 1) * d[i][k + 3];
+    check(ctx, cyc_curve_create_polynomial(ctx, 3, d[i], 3, &dc), "d");
+    check(ctx, cyc_curve_create_polynomial(ctx, 2, nc, 3, &ncv), "n");
+    check(ctx, ringed_any_field(ctx, dc, ncv, rho_deg[i], rho[i], &R[i]), "cyc_ringed_dnr_create");
+    cyc_curve_destroy(ctx, dc);
+    cyc_curve_destroy(ctx, ncv);
+    ends[i] = R[i];
+    write_surface(ctx, R[i], dir, names[i], NULL, report);
+  }
+  cyc_nway_options_init(&o);
+  o.center = CYC_NWAY_CENTER_GIVEN;
+  memcpy(o.s, s69, sizeof s69);
+  o.r = 2.6;
+  for (i = 0; i < 3; ++i) o.lambda[i] = 0.2;
+  fprintf(report, "  lambda_i = 0.2 (the paper's): %s",
+          cyc_status_name(cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, &rep)));
+  fprintf(report, " (gap of c_1, c_3: %.4f rad)\n", rep.gap[0][2]);
+  for (i = 0; i < 3; ++i) o.lambda[i] = 0.19;
+  check(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, &rep), "cyc_blend_ringed_nway");
+  fprintf(report, "  lambda_i = 0.19: |d_i(1) - s| = %.5f, %.5f, %.5f; smallest circle gap "
+                  "%.4f rad\n", rep.distance[0], rep.distance[1], rep.distance[2], rep.min_gap);
+  for (i = 0; i < 3; ++i) {
+    write_surface(ctx, B[2 * i], dir, blend_names[i], NULL, report);
+    for (k = 0; k < counts[i]; ++k) cyc_surface_destroy(ctx, B[2 * i + k]);
+    cyc_surface_destroy(ctx, R[i]);
+  }
+  check(ctx, cyc_nway_sphere_create(ctx, s69, 2.6, rep.n_star[0], &sphere), "cyc_nway_sphere_create");
+  write_surface(ctx, sphere, dir, "ringed_ex62_sphere", NULL, report);
+  cyc_surface_destroy(ctx, sphere);
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -744,6 +815,7 @@ int main(int argc, char** argv) {
   blend_demos(ctx, dir, report);
   pcurve_demos(ctx, dir, report);
   ringed_dnr_demos(ctx, dir, report);
+  nway_demo(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

@@ -7,7 +7,8 @@
 // unknown ones), cyc_ringed_pcurve_create (Prop. 3.1) and
 // cyc_ringed_sqrt_create (Theorem 3.6, rho = sqrt(R)), and the contour
 // points (Definition 7.1) of every surface built, and the bumped blend of
-// §5 with its clearance (54) and deviance (58), and its optimizer (§5.a).
+// §5 with its clearance (54) and deviance (58), and its optimizer (§5.a),
+// and the n-way blend of §6 through an auxiliary sphere (op_nway).
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -606,6 +607,152 @@ void op_bump_optimize(Input& in, Ctx& c) {
   }
 }
 
+// §6: the n-way blend (cyc_blend_ringed_nway) of n = 2..9 ends (2 and 9 are
+// out of range), each a ringed surface with directrix d(t) = P + (t - 1) T,
+// constant n and radius (cyc_ringed_dnr_create; NULL when that fails), at
+// end_u = 1, 0, 0.5 or a moderate value; fuzzed options (center mode,
+// alpha, s, r, r_fraction, lambdas, side, flags, tau; NULL options), NULL
+// pointers. Oracles: NULL gives CYC_E_NULL_ARGUMENT, n out of range
+// CYC_E_INVALID_ARGUMENT; on error blends/counts untouched; OK only with
+// disjoint circles when required, 1 or 2 pieces per end, finite points,
+// the blends' jets reproduce the report's at both ends (d, rho to 1e-7 of
+// the data's scale unless ill-conditioned) and a second call agrees; the
+// display sphere of the report's (s, r) lies on the sphere.
+void op_nway(Input& in, Ctx& c) {
+  const int n = in.range(2, 9);
+  cyc_surface* R[9] = {};
+  const cyc_surface* ends[9] = {};
+  double end_u[9] = {};
+  for (int i = 0; i < n; ++i) {
+    double P[9];
+    in.fill(P, 9, in.rarely() ? 0 : 1);  // P, T, n
+    const double rho = in.moderate();
+    const double rows[6] = {P[0] - P[3], P[1] - P[4], P[2] - P[5], P[3], P[4], P[5]};
+    cyc_curve *d = nullptr, *nc = nullptr;
+    c.check("cyc_curve_create_polynomial", cyc_curve_create_polynomial(c.ctx, 1, rows, 3, &d));
+    c.check("cyc_curve_create_polynomial", cyc_curve_create_polynomial(c.ctx, 0, P + 6, 3, &nc));
+    if (d && nc) {
+      const int s = cyc_ringed_dnr_create(c.ctx, d, nc, 0, &rho, 0, nullptr, nullptr, nullptr, 0,
+                                          1, &R[i], nullptr);
+      c.check("cyc_ringed_dnr_create", s);
+      if (s != CYC_OK) R[i] = nullptr;
+    }
+    cyc_curve_destroy(c.ctx, d);
+    cyc_curve_destroy(c.ctx, nc);
+    ends[i] = R[i];
+    switch (in.range(0, 3)) {
+      case 0: end_u[i] = 1; break;
+      case 1: end_u[i] = 0; break;
+      case 2: end_u[i] = 0.5; break;
+      default: end_u[i] = in.moderate(); break;
+    }
+  }
+  cyc_nway_options o;
+  cyc_nway_options_init(&o);
+  const bool null_options = in.rarely();
+  if (!null_options) {
+    o.center = in.range(0, 3);  // 3: unknown
+    o.alpha = in.moderate();
+    in.fill(o.s, 3, 1);
+    switch (in.range(0, 2)) {
+      case 0: break;
+      case 1: o.r = in.moderate(); break;
+      default: o.r = in.wild(); break;
+    }
+    if (in.flag()) o.r_fraction = in.moderate();
+    for (int i = 0; i < n && i < CYC_NWAY_MAX_ENDS; ++i)
+      o.lambda[i] = in.rarely() ? in.moderate() : in.range(1, 15) / 16.0;
+    o.side = in.range(0, 2);  // 2: unknown
+    o.require_disjoint = in.flag();
+    o.auto_v = in.flag();
+    switch (in.range(0, 2)) {
+      case 0: break;
+      case 1: o.blend.tau = 0.5; break;
+      default: o.blend.tau = in.moderate(); break;
+    }
+  }
+  const int nulls = in.rarely() ? in.range(1, 4) : 0;  // ends, end_u, blends, counts
+  cyc_surface* B[18];
+  int counts[9];
+  for (cyc_surface*& b : B) b = kSentinel;
+  for (int& k : counts) k = -7;
+  cyc_nway_report rep;
+  FZ_LOG("cyc_blend_ringed_nway n %d center %d r %a side %d nulls %d", n, o.center, o.r, o.side,
+         nulls);
+  auto call = [&](cyc_surface** b, int* k, cyc_nway_report* r) {
+    return cyc_blend_ringed_nway(c.ctx, nulls == 1 ? nullptr : ends,
+                                 nulls == 2 ? nullptr : end_u, n, null_options ? nullptr : &o,
+                                 nulls == 3 ? nullptr : b, nulls == 4 ? nullptr : k, r);
+  };
+  const int s = call(B, counts, &rep);
+  c.check("cyc_blend_ringed_nway", s);
+  if (nulls)
+    FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "NULL gives %s", cyc_status_name(s));
+  else if (n < 3 || n > CYC_NWAY_MAX_ENDS)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "n = %d gives %s", n, cyc_status_name(s));
+  if (s != CYC_OK) {
+    for (int j = 0; j < 18; ++j) FZ_CHECK(B[j] == kSentinel, "blends written on error");
+    for (int j = 0; j < 9; ++j) FZ_CHECK(counts[j] == -7, "counts written on error");
+  } else {
+    FZ_CHECK(rep.failed_end == -1 && std::isfinite(rep.r) && rep.r > 0 && rep.r < rep.bound,
+             "report on OK: r %g bound %g", rep.r, rep.bound);
+    if (null_options || o.require_disjoint) FZ_CHECK(rep.min_gap > 0, "OK with meeting circles");
+    cyc_surface* again[18] = {};
+    int counts2[9] = {};
+    const int s2 = call(again, counts2, nullptr);
+    c.check("cyc_blend_ringed_nway", s2);
+    FZ_CHECK(s2 == CYC_OK, "second call fails");
+    for (int i = 0; i < n; ++i) {
+      FZ_CHECK(counts[i] == 1 || counts[i] == 2, "count %d", counts[i]);
+      FZ_CHECK(s2 != CYC_OK || counts2[i] == counts[i], "second call differs");
+      const cyc_ringed_jet* want[2] = {&rep.end_jet[i], &rep.sphere_jet[i]};
+      for (int e = 0; e < 2; ++e) {
+        cyc_surface* S = B[2 * i + (e == 0 ? 0 : counts[i] - 1)];
+        cyc_ringed_jet J;
+        const int sj = cyc_surface_ringed_jet(c.ctx, S, double(e), &J);
+        c.check("cyc_surface_ringed_jet", sj);
+        const cyc_ringed_jet& W = *want[e];
+        double scale = 1 + std::abs(W.rho) + std::abs(W.drho), dd = 0;
+        for (int j = 0; j < 3; ++j) {
+          scale += std::abs(W.d[j]) + std::abs(W.dd[j]) + std::abs(W.n[j]) + std::abs(W.dn[j]);
+          if (sj == CYC_OK) dd = std::max(dd, std::abs(J.dd[j]));
+        }
+        if (sj != CYC_OK || !(dd <= 1e6 * scale) || scale > 1e6) continue;
+        for (int j = 0; j < 3; ++j)
+          FZ_CHECK(std::abs(J.d[j] - W.d[j]) <= 1e-7 * scale, "blend %d end %d: d off", i, e);
+        FZ_CHECK(std::abs(J.rho - W.rho) <= 1e-7 * scale, "blend %d end %d: rho off", i, e);
+      }
+      for (int k = 0; k < 2; ++k) {
+        if (k < counts[i]) {
+          check_points(c, B[2 * i + k], again[2 * i + k], "cyc_blend_ringed_nway");
+          cyc_surface_destroy(c.ctx, B[2 * i + k]);
+        } else {
+          FZ_CHECK(B[2 * i + k] == nullptr, "unused slot not NULL");
+        }
+        cyc_surface_destroy(c.ctx, again[2 * i + k]);
+      }
+    }
+    cyc_surface* sphere = nullptr;
+    const int ss = cyc_nway_sphere_create(c.ctx, rep.s, rep.r, rep.n_star[0], &sphere);
+    c.check("cyc_nway_sphere_create", ss);
+    if (ss == CYC_OK) {
+      double X[3];
+      const int se = cyc_surface_eval(c.ctx, sphere, 0.5, 0.25, X, nullptr, nullptr, nullptr);
+      c.check("cyc_surface_eval", se);
+      if (se == CYC_OK && rep.r < 1e6 && std::abs(rep.s[0]) + std::abs(rep.s[1]) + std::abs(rep.s[2]) < 1e6) {
+        const double dist = std::sqrt((X[0] - rep.s[0]) * (X[0] - rep.s[0]) +
+                                      (X[1] - rep.s[1]) * (X[1] - rep.s[1]) +
+                                      (X[2] - rep.s[2]) * (X[2] - rep.s[2]));
+        FZ_CHECK(std::abs(dist - rep.r) <= 1e-9 * (1 + rep.r + std::abs(rep.s[0]) +
+                                                    std::abs(rep.s[1]) + std::abs(rep.s[2])),
+                 "display sphere off by %g", dist - rep.r);
+      }
+      cyc_surface_destroy(c.ctx, sphere);
+    }
+  }
+  for (cyc_surface* x : R) cyc_surface_destroy(c.ctx, x);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -620,8 +767,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const int nops = in.range(1, 8);
   for (int i = 0; i < nops; ++i) {
     // One byte: odd = blend (the old flag), 2 mod 8 = the (d, n, rho)
-    // creators, 4 mod 8 = the bumped blend, 6 mod 8 = its optimizer, other
-    // even values = create (old seeds keep their meaning).
+    // creators, 4 mod 8 = the bumped blend, 6 mod 8 = its optimizer, 8 mod
+    // 16 = the n-way blend of §6, other values (0 mod 16) = create. The
+    // committed seeds use 0 for create, so they keep their meaning; a
+    // fuzzer-found input with 8 mod 16 for create reads as n-way now.
     const int op = in.range(0, 255);
     if (op % 2 == 1)
       op_blend(in, c);
@@ -631,6 +780,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       op_bump(in, c);
     else if (op % 8 == 6)
       op_bump_optimize(in, c);
+    else if (op % 16 == 8)
+      op_nway(in, c);
     else
       op_create(in, c);
   }

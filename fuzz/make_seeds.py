@@ -2043,6 +2043,47 @@ class RingedEncoder(Encoder):
         self.rarely(False)
         self.rarely(False)
 
+    def nway(self, ends, center=0, alpha=0, s=(0, 0, 0), r=None, r_fraction=None,
+             lambdas=None, side=0, require_disjoint=True, auto_v=True, tau=0.0,
+             null_options=False, nulls=0, n=None):
+        """op_nway: ends = [(P, T, nvec, rho, end_u_code)]; n overrides
+        len(ends) (2 or 9: out of range, the ends beyond len(ends) are
+        points at the origin)."""
+        n = len(ends) if n is None else n
+        self.range(0, 255, 8)  # op_nway
+        self.range(2, 9, n)
+        for i in range(n):
+            P, T, nv, rho, code = ends[i] if i < len(ends) else ((0, 0, 0), (1, 0, 0),
+                                                                    (1, 0, 0), 1, 0)
+            self.rarely(False)
+            self.fill(list(P) + list(T) + list(nv), 1)
+            self.moderate(rho)
+            self.range(0, 3, code)
+        self.rarely(null_options)
+        if not null_options:
+            self.range(0, 3, center)
+            self.moderate(alpha)
+            self.fill(s, 1)
+            if r is None:
+                self.range(0, 2, 0)
+            else:
+                self.range(0, 2, 1)
+                self.moderate(r)
+            self.flag(r_fraction is not None)
+            if r_fraction is not None:
+                self.moderate(r_fraction)
+            for i in range(min(n, 8)):
+                lam = lambdas[i] if lambdas else 0.5
+                self.rarely(False)
+                self.range(1, 15, int(lam * 16))
+            self.range(0, 2, side)
+            self.flag(require_disjoint)
+            self.flag(auto_v)
+            self.range(0, 2, 0 if tau == 0 else 1)
+        self.rarely(nulls > 0)
+        if nulls:
+            self.range(1, 4, nulls)
+
 
 def ringed_seeds():
     ex41_a = {"d": (-4, -3, 1), "dd": (2, 4, 3), "n": (1, 1, 1), "dn": (0, 1, 1),
@@ -2101,6 +2142,23 @@ def ringed_seeds():
         lambda e: e.bump_optimize(ex41_a, ex41_b),
         lambda e: e.bump_optimize(ex41_a, ex41_b, obstacle=((-2, -1, 1.25), 0.5), iters=8),
         lambda e: e.bump_optimize(ex41_a, ex41_b, nodes=8, free_tau=False),
+    ]).data()
+    # §6, Example 6.2's ends as lines (d_i(1), d_i'(1), n = d'), the sphere
+    # (69) with lambda = 3/16 (disjoint circles) and 1/4 (c_1, c_3 meet),
+    # the automatic sphere with P-biarcs on the printed side, ends at u = 0
+    # and 0.5, n = 2 and NULL pointers.
+    ex62 = [((-6, -3, 0), (8, 4, 0), (8, 4, 0), 0.8125, 0),
+            ((6, -3, 0), (-8, 4, 0), (-8, 4, 0), 0.5, 0),
+            ((0, 5, -5), (0, -4, 4), (0, -4, 4), 0.8125, 0)]
+    s69 = (0.5, 0.3, -0.25)
+    seeds["seed-nway"] = RingedEncoder([
+        lambda e: e.nway(ex62, center=2, s=s69, r=2.6, lambdas=[0.1875] * 3),
+        lambda e: e.nway(ex62, center=2, s=s69, r=2.6, lambdas=[0.25] * 3),
+        lambda e: e.nway(ex62, lambdas=[0.125] * 3, side=1, tau=0.5),
+        lambda e: e.nway([x[:4] + (2,) for x in ex62], center=1, alpha=0.01,
+                         lambdas=[0.125] * 3, require_disjoint=False),
+        lambda e: e.nway(ex62, n=2),
+        lambda e: e.nway(ex62, nulls=3),
     ]).data()
     seeds["seed-create"] = RingedEncoder([
         lambda e: e.create(("poly", 1, (0, 0, 0, 0, 0, 1)), ("point", (0, 0, 1)),

@@ -337,6 +337,7 @@ static const struct {
     {CYC_E_TOO_FEW_LINES, "CYC_E_TOO_FEW_LINES"},
     {CYC_E_NO_NORMAL_FORM, "CYC_E_NO_NORMAL_FORM"},
     {CYC_E_NOT_PYTHAGOREAN, "CYC_E_NOT_PYTHAGOREAN"},
+    {CYC_E_INTERSECTING_CIRCLES, "CYC_E_INTERSECTING_CIRCLES"},
     {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
     {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
     {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
@@ -347,7 +348,7 @@ static const struct {
 
 static void test_versions_and_names(void) {
   size_t i, j;
-  const int unknown[] = {-1, 6, 99, 116, 199, 201, 302, 402, 12345};
+  const int unknown[] = {-1, 6, 99, 117, 199, 201, 302, 402, 12345};
   CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
   CHECK(cyc_version_string() != NULL);
   CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
@@ -363,7 +364,8 @@ static void test_versions_and_names(void) {
   CHECK(CYC_E_PARALLEL_LINES == 107 && CYC_E_NO_COMMON_NORMAL == 108 &&
         CYC_E_RANK_DEFICIENT == 109 && CYC_E_AT_INVERSION_CENTER == 110 &&
         CYC_E_NOT_PARABOLIC == 111 && CYC_E_EMPTY_REAL_LOCUS == 112 && CYC_E_TOO_FEW_LINES == 113 &&
-        CYC_E_NO_NORMAL_FORM == 114 && CYC_E_NOT_PYTHAGOREAN == 115);
+        CYC_E_NO_NORMAL_FORM == 114 && CYC_E_NOT_PYTHAGOREAN == 115 &&
+        CYC_E_INTERSECTING_CIRCLES == 116);
   CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
         CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
   CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2 && CYC_SURFACE_RINGED == 3);
@@ -2763,6 +2765,121 @@ static void test_ringed_sqrt(cyc_context* ctx) {
   cyc_curve_destroy(ctx, n);
 }
 
+/* (d, n, rho) on [0, 1] with the automatic field, else Example 3.3's
+ * (quadratic n): the automatic route may project along an axis where sigma
+ * vanishes in [0, 1] (Example 6.2's R_3: |n x e3| = |6t^2 - 10t|). */
+static int ringed_any_field(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n, int rho_deg,
+                            const double* rho, cyc_surface** out) {
+  cyc_ringed_field_options o;
+  int st;
+  cyc_ringed_field_options_init(&o);
+  st = cyc_ringed_dnr_create(ctx, d, n, rho_deg, rho, 0, NULL, &o, NULL, 0, 1, out, NULL);
+  if (st == CYC_OK) return st;
+  o.method = CYC_RINGED_FIELD_QUADRATIC;
+  for (o.which = 0; o.which < 2; ++o.which) {
+    st = cyc_ringed_dnr_create(ctx, d, n, rho_deg, rho, 0, NULL, &o, NULL, 0, 1, out, NULL);
+    if (st == CYC_OK) return st;
+  }
+  return st;
+}
+
+/* Seed 001 §6: the n-way blend of Example 6.2 (68), (69). */
+static double jet_gap(const cyc_ringed_jet* a, const cyc_ringed_jet* b) {
+  double m = fabs(a->rho - b->rho) + fabs(a->drho - b->drho);
+  int k;
+  for (k = 0; k < 3; ++k)
+    m += fabs(a->d[k] - b->d[k]) + fabs(a->dd[k] - b->dd[k]) + fabs(a->n[k] - b->n[k]) +
+         fabs(a->dn[k] - b->dn[k]);
+  return m;
+}
+
+static void test_nway(cyc_context* ctx) {
+  /* d_i and n_i = d_i' in power form (rows x y z), rho_i. */
+  const double d[3][12] = {{-9, -7, 0, 12, 4, 0, -23, 0, 0, 14, 0, 0},
+                           {6, -8, 0, 4, 4, 0, 0, 3, 0, -4, -2, 0},
+                           {0, 8, -8, 0, 0, 4, 0, -5, -3, 0, 2, 2}};
+  const double rho[3][3] = {{4.0 / 6, 1.0 / 6, 0}, {1, 0, -0.5}, {9.0 / 6, -4.0 / 6, 0}};
+  const int rho_deg[3] = {1, 2, 1};
+  const double u[3] = {1, 1, 1}, bad_u[3] = {1, 2, 1};
+  const double center[3] = {0.5, 0.3, -0.25}, axis[3] = {0, 0, 1};
+  cyc_surface* R[3] = {NULL, NULL, NULL};
+  cyc_surface* B[6];
+  const cyc_surface* ends[3];
+  int counts[3] = {-1, -1, -1}, i, k;
+  cyc_nway_options o;
+  cyc_nway_report rep;
+  cyc_surface* sphere = SURF_SENT;
+  for (i = 0; i < 3; ++i) {
+    double nc[9];
+    cyc_curve *dc = NULL, *ncv = NULL;
+    for (k = 0; k < 9; ++k) nc[k] = (k / 3 + 1) * d[i][k + 3];
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 3, d[i], 3, &dc), CYC_OK);
+    CHECK_STATUS(ctx, cyc_curve_create_polynomial(ctx, 2, nc, 3, &ncv), CYC_OK);
+    CHECK(ringed_any_field(ctx, dc, ncv, rho_deg[i], rho[i], &R[i]) == CYC_OK);
+    cyc_curve_destroy(ctx, dc);
+    cyc_curve_destroy(ctx, ncv);
+    ends[i] = R[i];
+  }
+  if (!R[0] || !R[1] || !R[2]) return;
+  for (k = 0; k < 6; ++k) B[k] = SURF_SENT;
+  cyc_nway_options_init(&o);
+  CHECK(o.center == CYC_NWAY_CENTER_AUTO && o.side == CYC_NWAY_SIDE_FACING &&
+        o.require_disjoint == 1 && o.r == 0 && o.r_fraction == 0.5 && o.lambda[7] == 0.5);
+  o.center = CYC_NWAY_CENTER_GIVEN;
+  for (k = 0; k < 3; ++k) o.s[k] = center[k];
+  o.r = 2.6;
+  for (k = 0; k < 3; ++k) o.lambda[k] = 0.2;
+  /* lambda = 0.2: c_1 and c_3 meet; nothing written but the report. */
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, &rep),
+               CYC_E_INTERSECTING_CIRCLES);
+  CHECK(rep.worst_i == 0 && rep.worst_j == 2 && rep.gap[0][2] < 0 && rep.gap[0][1] > 0);
+  CHECK(fabs(rep.distance[0] - 7.29400) < 5e-6 && fabs(rep.distance[1] - 6.41892) < 5e-6 &&
+        fabs(rep.distance[2] - 6.70093) < 5e-6 && fabs(rep.bound - 6.41892) < 5e-6);
+  CHECK(B[0] == SURF_SENT && counts[0] == -1);
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 2, &o, B, counts, NULL),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, bad_u, 3, &o, B, counts, NULL),
+               CYC_E_BAD_DOMAIN);
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, NULL, counts, NULL),
+               CYC_E_NULL_ARGUMENT);
+  o.r = 7;
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, NULL),
+               CYC_E_BAD_DOMAIN);
+  o.r = 2.6;
+  o.side = 5;
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, NULL),
+               CYC_E_INVALID_ARGUMENT);
+  o.side = CYC_NWAY_SIDE_FACING;
+  CHECK(B[0] == SURF_SENT && counts[0] == -1);
+  /* lambda = 0.19: disjoint; three blends, C^1 at both ends. */
+  for (k = 0; k < 3; ++k) o.lambda[k] = 0.19;
+  CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, &rep), CYC_OK);
+  CHECK(rep.min_gap > 0.02 && rep.failed_end == -1);
+  for (i = 0; i < 3; ++i) {
+    cyc_ringed_jet J0, J1;
+    CHECK(counts[i] == 1 && B[2 * i + 1] == NULL);
+    if (counts[i] != 1 || !B[2 * i] || B[2 * i] == SURF_SENT) continue;
+    CHECK_STATUS(ctx, cyc_surface_ringed_jet(ctx, B[2 * i], 0.0, &J0), CYC_OK);
+    CHECK_STATUS(ctx, cyc_surface_ringed_jet(ctx, B[2 * i], 1.0, &J1), CYC_OK);
+    CHECK(jet_gap(&J0, &rep.end_jet[i]) < 1e-9);
+    CHECK(jet_gap(&J1, &rep.sphere_jet[i]) < 1e-9);
+    CHECK(fabs(rep.sphere_jet[i].rho - 2 * 2.6 * sqrt(0.19 * 0.81)) < 1e-13);
+    cyc_surface_destroy(ctx, B[2 * i]);
+  }
+  /* The sphere for display. */
+  CHECK_STATUS(ctx, cyc_nway_sphere_create(ctx, center, 0, axis, &sphere), CYC_E_INVALID_ARGUMENT);
+  CHECK(sphere == SURF_SENT);
+  CHECK_STATUS(ctx, cyc_nway_sphere_create(ctx, center, 2.6, axis, &sphere), CYC_OK);
+  if (sphere && sphere != SURF_SENT) {
+    double x[3];
+    CHECK_STATUS(ctx, cyc_surface_eval(ctx, sphere, 0.3, 0.7, x, NULL, NULL, NULL), CYC_OK);
+    CHECK(fabs(sqrt((x[0] - 0.5) * (x[0] - 0.5) + (x[1] - 0.3) * (x[1] - 0.3) +
+                    (x[2] + 0.25) * (x[2] + 0.25)) - 2.6) < 1e-12);
+    cyc_surface_destroy(ctx, sphere);
+  }
+  for (i = 0; i < 3; ++i) cyc_surface_destroy(ctx, R[i]);
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -2789,6 +2906,7 @@ int main(void) {
     test_ringed(ctx);
     test_ringed_dnr(ctx);
     test_ringed_sqrt(ctx);
+    test_nway(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

@@ -136,6 +136,8 @@ inline const char* explain(Status s) {
     case Status::not_pythagorean:
       return "the data admit no P-curve here (a norm is not the square of a polynomial, or "
              "planar Hermite data vanish at an end)";
+    case Status::intersecting_circles:
+      return "two joining circles on the auxiliary sphere intersect (choose other lambdas)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -30,6 +30,7 @@ enum class Status : int {
   too_few_lines = 113,      // Props. 3, 5: the cyclide lacks the lines they need
   no_normal_form = 114,     // Props. 2, 8, 9: the input has no normal form (coplanar, ...)
   not_pythagorean = 115,    // seed 001 §3-4: no P-curve (a norm is not a polynomial square)
+  intersecting_circles = 116,  // seed 001 §6: two joining circles on the auxiliary sphere meet
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

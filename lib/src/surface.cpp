@@ -542,6 +542,7 @@ const char* status_name(Status s) noexcept {
     case Status::too_few_lines: return "CYC_E_TOO_FEW_LINES";
     case Status::no_normal_form: return "CYC_E_NO_NORMAL_FORM";
     case Status::not_pythagorean: return "CYC_E_NOT_PYTHAGOREAN";
+    case Status::intersecting_circles: return "CYC_E_INTERSECTING_CIRCLES";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -768,6 +768,87 @@ CYC_API int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet*
                                          const cyc_directrix_bump* bump, cyc_surface** pieces,
                                          int* count);
 
+/* ------------------------- n-way blends through a sphere (seed 001 §6) */
+
+/** At most this many ends in cyc_blend_ringed_nway. */
+#define CYC_NWAY_MAX_ENDS 8
+/* Where the auxiliary sphere's center s comes from (eq. 63). */
+#define CYC_NWAY_CENTER_AUTO 0  /* s = y + alpha N, alpha from the end tangents (default) */
+#define CYC_NWAY_CENTER_ALPHA 1 /* s = y + alpha N with options.alpha */
+#define CYC_NWAY_CENTER_GIVEN 2 /* s = options.s (Example 6.2, eq. 69) */
+/* On which side of s the joining circle c_i = S_i(lambda_i) lies (eq. 66). */
+#define CYC_NWAY_SIDE_FACING 0  /* S_i runs from the pole facing R_i's end (default) */
+#define CYC_NWAY_SIDE_PRINTED 1 /* (66) as printed: small lambda beyond s, away from R_i */
+
+/** Options of cyc_blend_ringed_nway (initialize with cyc_nway_options_init). */
+typedef struct cyc_nway_options {
+  int center;        /* CYC_NWAY_CENTER_* */
+  double alpha;      /* CENTER_ALPHA: the factor of N in (63) */
+  double s[3];       /* CENTER_GIVEN: the center */
+  double r;          /* > 0: the radius; 0 (default): r_fraction * bound (65) */
+  double r_fraction; /* in (0, 1), default 0.5 */
+  double lambda[CYC_NWAY_MAX_ENDS]; /* each in (0, 1), default 0.5: c_i = S_i(lambda_i) */
+  int side;             /* CYC_NWAY_SIDE_* */
+  int require_disjoint; /* nonzero (default): intersecting joining circles are an error */
+  int auto_v;  /* nonzero (default): each blend projects along n_a x n_b; 0: blend.v */
+  cyc_pcurve_blend_options blend; /* sign, tau and v of every blend */
+} cyc_nway_options;
+CYC_API void cyc_nway_options_init(cyc_nway_options* options);
+
+/** What cyc_blend_ringed_nway computed (ends i < n; the rest zero). */
+typedef struct cyc_nway_report {
+  double y[3];        /* (64): the incentre (n = 3) or centroid (n > 3) of the end centers */
+  double normal[3];   /* (63): N = sum_k d_k x d_k+1 (= (d1 - d2) x (d1 - d3) for n = 3) */
+  double alpha;       /* the alpha used (0 for CENTER_GIVEN) */
+  double s[3], r;     /* the sphere */
+  double bound;       /* (65): min |d_i - s|; r in (0, bound) */
+  double clear_bound; /* min (|d_i - s| - rho_i): below it the end circles miss the sphere */
+  double n_star[CYC_NWAY_MAX_ENDS][3]; /* (66): (d_i - s) / |d_i - s| */
+  double distance[CYC_NWAY_MAX_ENDS];  /* |d_i - s| */
+  double theta[CYC_NWAY_MAX_ENDS];     /* angular radius of c_i: cos = 1 - 2 lambda_i */
+  double gap[CYC_NWAY_MAX_ENDS][CYC_NWAY_MAX_ENDS]; /* signed angular gap of c_i, c_j (rad):
+                                                       > 0 disjoint, <= 0 intersecting */
+  int nested[CYC_NWAY_MAX_ENDS][CYC_NWAY_MAX_ENDS]; /* disjoint, one cap inside the other */
+  double min_gap;
+  int worst_i, worst_j;                             /* the pair of min_gap */
+  cyc_ringed_jet end_jet[CYC_NWAY_MAX_ENDS];        /* R_i at its end, moving away from R_i */
+  cyc_ringed_jet sphere_jet[CYC_NWAY_MAX_ENDS];     /* S_i at lambda_i (67), as interpolated */
+  double v[CYC_NWAY_MAX_ENDS][3];                   /* each blend's projection direction */
+  int failed_end;                                   /* the blend that failed, -1: none */
+} cyc_nway_report;
+
+/** Seed 001 §6, eqs. (62)-(67): the n-way blend (3 <= n <= CYC_NWAY_MAX_ENDS)
+ *  of the ringed surfaces ends[i] at their end parameters end_u[i] (the
+ *  nearer end of the domain says which way R_i leaves: at u1 as is, at u0
+ *  reversed) through an auxiliary sphere (s, r): s on the line through the
+ *  incentre y of the end centers along N (63), (64), r in (0, min |d_i - s|)
+ *  (65); the sphere seen from R_i as the ringed surface S_i (66); and for
+ *  each i the two-surface P-curve blend B_i (cyc_blend_ringed_pcurve) from
+ *  R_i's end (t = 0) to the joining circle c_i = S_i(lambda_i) (t = 1),
+ *  C^1 in (d, n, rho) at both ends. S_i's n is the unit direction of travel
+ *  into the sphere, signed like n_i . d_i' at R_i's end.
+ *  blends has 2 n slots: B_i is blends[2i] (and blends[2i + 1] for a P-biarc
+ *  or two-piece split; else NULL), counts[i] its number of pieces. All or
+ *  nothing: the handles and counts are written only on success. report (may
+ *  be NULL) is written on every return but CYC_E_NULL_ARGUMENT, as far as
+ *  the construction got. Statuses: CYC_E_INVALID_ARGUMENT (n out of range,
+ *  r < 0, r_fraction outside (0, 1), unknown center/side, sign not +-1),
+ *  CYC_E_NOT_FINITE, CYC_E_COLLINEAR_POINTS (end centers collinear or
+ *  coincident: no incentre, no plane), CYC_E_BAD_DOMAIN (end_u outside the
+ *  domain, a lambda outside (0, 1), r outside (0, bound): an end center in
+ *  the sphere), CYC_E_INTERSECTING_CIRCLES (two joining circles meet and
+ *  require_disjoint), then the statuses of cyc_surface_ringed_jet and
+ *  cyc_blend_ringed_pcurve (report->failed_end names the blend). */
+CYC_API int cyc_blend_ringed_nway(cyc_context* ctx, const cyc_surface* const* ends,
+                                  const double* end_u, int n, const cyc_nway_options* options,
+                                  cyc_surface** blends, int* counts, cyc_nway_report* report);
+
+/** The sphere (center, radius) as a ringed surface for display: circles
+ *  perpendicular to axis (any nonzero length), u in [1e-3, 1 - 1e-3] (the
+ *  poles, where the circles vanish, are left out). Exact rational. */
+CYC_API int cyc_nway_sphere_create(cyc_context* ctx, const double center[3], double radius,
+                                   const double axis[3], cyc_surface** out);
+
 /** Eq. (54): the clearance min over the domain of |d(u) - s| - rho(u) - r of
  *  any surface of the library (d the circle's center) from the sphere
  *  (center, radius): positive means no circle meets the sphere (sufficient,

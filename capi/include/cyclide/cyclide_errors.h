@@ -30,6 +30,7 @@ enum cyc_status {
   CYC_E_TOO_FEW_LINES = 113,       /* Props. 3/5: the cyclide lacks the needed lines */
   CYC_E_NO_NORMAL_FORM = 114,      /* Props. 2/8/9: input without a normal form */
   CYC_E_NOT_PYTHAGOREAN = 115,     /* seed 001: the data admit no P-curve */
+  CYC_E_INTERSECTING_CIRCLES = 116, /* seed 001 §6: joining circles on the sphere meet */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 
