@@ -238,6 +238,60 @@ TEST(PaperSeed001Implicit, Example76ApproximationAndRefinement) {
               two.piece[1].error87, two.error87, two.omega);
 }
 
+// The optimizer's validation: options out of range, zero or parallel
+// directions, a direction without contour points; nothing written.
+TEST(ImplicitBlend, OptimizerRefusesBadOptionsAndDirections) {
+  const ImplicitBlend B = example76();
+  Surface S[optim::kMaxImplicitPieces];
+  int count = -7;
+  optim::ImplicitApproxReport R;
+  optim::ImplicitApproxOptions o;
+  o.pieces = 0;
+  EXPECT_EQ(optim::approximate_implicit_blend(B, kV, o, S, count, R), Status::invalid_argument);
+  o = optim::ImplicitApproxOptions();
+  o.pieces = optim::kMaxImplicitPieces + 1;
+  EXPECT_EQ(optim::approximate_implicit_blend(B, kV, o, S, count, R), Status::invalid_argument);
+  o = optim::ImplicitApproxOptions();
+  o.psi_weight = NAN;
+  EXPECT_EQ(optim::approximate_implicit_blend(B, kV, o, S, count, R), Status::not_finite);
+  o = optim::ImplicitApproxOptions();
+  o.nodes = 1;
+  EXPECT_EQ(optim::approximate_implicit_blend(B, kV, o, S, count, R), Status::invalid_argument);
+  o = optim::ImplicitApproxOptions();
+  const Vec3d parallel[3] = {Vec3d(0, 0, 1), Vec3d(0, 0, -2), Vec3d(0, 1, 0)};
+  EXPECT_EQ(optim::approximate_implicit_blend(B, parallel, o, S, count, R),
+            Status::invalid_argument);
+  const Vec3d zero[3] = {Vec3d(0, 0, 1), Vec3d::Zero(), Vec3d(0, 1, 0)};
+  EXPECT_EQ(optim::approximate_implicit_blend(B, zero, o, S, count, R), Status::invalid_argument);
+  // v = e1 is R1's axis: every point of P1's circle is a contour point.
+  const Vec3d axis[3] = {Vec3d(1, 0, 0), Vec3d(0, 0, 1), Vec3d(0, 1, 0)};
+  EXPECT_EQ(optim::approximate_implicit_blend(B, axis, o, S, count, R), Status::empty_real_locus);
+  EXPECT_EQ(count, -7);
+  // Zero iterations: the start cubics (alpha = beta = |q - p|), not reverted.
+  o.max_iterations = 0;
+  ASSERT_EQ(optim::approximate_implicit_blend(B, kV, o, S, count, R), Status::ok);
+  EXPECT_EQ(R.piece[0].omega, R.piece[0].omega_initial);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_DOUBLE_EQ(R.piece[0].alpha[i], (R.data[0].q[i] - R.data[0].p[i]).norm());
+}
+
+// The 2D Newton of the refinement converges to the contour point from a
+// nearby start in an interior plane, and reports a non-finite start.
+TEST(ImplicitBlend, PlaneNewtonFindsInteriorContourPoints) {
+  const ImplicitBlend B = example76();
+  ContourPiece P;
+  ASSERT_EQ(contour_piece(B, kV, P), Status::ok);
+  const Vec3d o = P.dbar(0.5), N = P.dbar_derivative(0.5);
+  for (int i = 0; i < 3; ++i) {
+    Vec3d x = P.dbar(0.5) + 0.5 * (P.p[i] - P.s1 + P.q[i] - P.s2);  // a rough start
+    ASSERT_EQ(plane_contour_newton(B, kV[i], N, o, x), Status::ok) << i;
+    expect_on_contour(B, kV[i], x, 1e-11);
+    EXPECT_LE(std::abs(N.normalized().dot(x - o)), 1e-12 * (1 + x.norm()));
+  }
+  Vec3d bad(NAN, 0, 0);
+  EXPECT_EQ(plane_contour_newton(B, kV[0], N, o, bad), Status::not_finite);
+}
+
 // Random pairs of cylinders (radius 1..3, axes through the bounding
 // planes' circles): the contour points on the planes lie on f = f_v = 0
 // and on the plane (relative to the gradients, 1e-9).
