@@ -3,7 +3,8 @@
 // cylinders (cyc_implicit_cylinder) and planes, or from raw fuzzed
 // coefficients, with fuzzed lambda and n; then cyc_implicit_blend_eval,
 // cyc_implicit_contour_points and cyc_optimize_implicit_blend (few Ceres
-// iterations and small quadratures: the CI smoke runs every target).
+// iterations and small quadratures: the CI smoke runs every target; three
+// contour curves or Remark 7.5's two).
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -131,6 +132,7 @@ void op_optimize(Input& in, Ctx& c, const cyc_implicit_blend& B) {
   o.error_nodes_t = in.range(1, 4);
   o.error_nodes_u = in.range(3, 8);
   if (in.rarely()) o.psi_weight = fz::coord(in);
+  o.two_curves = in.flag() ? 1 : 0;
   cyc_surface* S[CYC_MAX_IMPLICIT_PIECES];
   for (auto& p : S) p = kSentinel;
   int count = -7;

@@ -2158,7 +2158,7 @@ class ImplicitEncoder(Encoder):
         self.range(-1, 2, end)
         self.coords(v)
 
-    def optimize(self, pieces, iters, nodes=4, nt=2, nu=6, v=None):
+    def optimize(self, pieces, iters, nodes=4, nt=2, nu=6, v=None, two_curves=False):
         self.range(0, 2, 2)
         self.flag(v is not None)
         if v is not None:
@@ -2169,6 +2169,7 @@ class ImplicitEncoder(Encoder):
         self.range(1, 4, nt)
         self.range(3, 8, nu)
         self.rarely(False)
+        self.flag(two_curves)
 
 
 def implicit_seeds():
@@ -2182,6 +2183,7 @@ def implicit_seeds():
     seeds["seed-cylinders"] = ImplicitEncoder(cyl, 8, 2, [
         lambda e: e.contour(1, (0, 1, 0)),
         lambda e: e.optimize(1, 1),
+        lambda e: e.optimize(1, 2, two_curves=True),
     ]).data()
     return seeds
 

@@ -292,6 +292,38 @@ TEST(ImplicitBlend, PlaneNewtonFindsInteriorContourPoints) {
   EXPECT_EQ(plane_contour_newton(B, kV[0], N, o, bad), Status::not_finite);
 }
 
+// Remark 7.5: both branches of the contour curve for v1 = (0, 0, 1) and
+// one for v2 = (0, 1, 0) give an exact ringed surface through the three
+// cubics as well.
+TEST(PaperSeed001Implicit, Remark75TwoContourCurves) {
+  const ImplicitBlend B = example76();
+  optim::ImplicitApproxOptions o;
+  o.two_curves = true;
+  Surface S[optim::kMaxImplicitPieces];
+  int count = 0;
+  optim::ImplicitApproxReport R;
+  const Vec3d v[3] = {kV[0], kV[1], Vec3d::Zero()};  // v[2] unused
+  ASSERT_EQ(optim::approximate_implicit_blend(B, v, o, S, count, R), Status::ok);
+  const ContourPiece& P = R.data[0];
+  EXPECT_EQ(P.v[0], kV[0]);
+  EXPECT_EQ(P.v[1], kV[0]);
+  EXPECT_EQ(P.v[2], kV[1]);
+  EXPECT_GT((P.p[0] - P.p[1]).norm(), 1.0);  // the two branches of one curve
+  EXPECT_TRUE(std::isfinite(R.error87));
+  for (int k = 0; k <= 8; ++k) {
+    const double t = k / 8.0;
+    Vec3d C, N;
+    double r2 = 0;
+    ASSERT_EQ(S[0].circle(t, C, N, r2), Status::ok);
+    for (int i = 0; i < 3; ++i) {
+      const Vec3d c = ferguson(P.p[i], Vec3d(R.piece[0].alpha[i] * P.tp[i]), P.q[i],
+                               Vec3d(R.piece[0].beta[i] * P.tq[i]), t);
+      EXPECT_NEAR((c - C).squaredNorm(), r2, 1e-9 * (1 + r2));
+    }
+  }
+  std::printf("Remark 7.5 (v1 both branches, v2): (87) %.6g, Omega %.6g\n", R.error87, R.omega);
+}
+
 // Random pairs of cylinders (radius 1..3, axes through the bounding
 // planes' circles): the contour points on the planes lie on f = f_v = 0
 // and on the plane (relative to the gradients, 1e-9).

@@ -167,6 +167,7 @@ int cyc_optimize_implicit_blend(cyc_context* ctx, const cyc_implicit_blend* blen
     o.parameter_tolerance = p.parameter_tolerance;
     o.error_nodes_t = p.error_nodes_t;
     o.error_nodes_u = p.error_nodes_u;
+    o.two_curves = p.two_curves != 0;
     const Vec3d V[3] = {vec(v), vec(v + 3), vec(v + 6)};
     Surface S[optim::kMaxImplicitPieces];
     int n = 0;

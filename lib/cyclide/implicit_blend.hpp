@@ -234,6 +234,12 @@ struct ContourPiece {
 // choice has three non-collinear points at both ends.
 Status contour_piece(const ImplicitBlend& B, const Vec3d (&v)[3], ContourPiece& out);
 
+// Remark 7.5: the same with both branches c_v1^+, c_v1^- of the contour
+// curve for v1 (the two P1 points, each paired by its trace) and the best
+// branch for v2 (v = {v1, v1, v2} in the result).
+Status contour_piece_two_curves(const ImplicitBlend& B, const Vec3d& v1, const Vec3d& v2,
+                                ContourPiece& out);
+
 // The piece data for given end points (refinement (84): p, q from the
 // cut planes), with tangents, centres and dbar; nA, nB are the planes'
 // normals (oriented here from p to q).

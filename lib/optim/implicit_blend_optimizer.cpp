@@ -73,7 +73,8 @@ Status check(const Vec3d (&v)[3], const ImplicitApproxOptions& o) {
     if (!std::isfinite(x)) return Status::not_finite;
   for (const Vec3d& w : v)
     if (!input_ok(w)) return Status::not_finite;
-  for (int i = 0; i < 3; ++i) {
+  const int used = o.two_curves ? 2 : 3;
+  for (int i = 0; i < used; ++i) {
     if (!(v[i].norm() > 0)) return Status::invalid_argument;
     for (int j = 0; j < i; ++j)
       if (v[i].normalized().cross(v[j].normalized()).norm() <= 1e-9)
@@ -197,7 +198,11 @@ Status approximate_implicit_blend(const ImplicitBlend& B, const Vec3d (&v)[3],
   const auto clock0 = std::chrono::steady_clock::now();
   if (Status st = check(v, options); st != Status::ok) return st;
   ContourPiece whole;
-  if (Status st = contour_piece(B, v, whole); st != Status::ok) return st;
+  if (Status st = options.two_curves ? contour_piece_two_curves(B, v[0], v[1], whole)
+                                     : contour_piece(B, v, whole);
+      st != Status::ok)
+    return st;
+  const Vec3d(&w)[3] = whole.v;  // the branches' directions (Remark 7.5: v1, v1, v2)
   std::vector<Surface> S(size_t(options.pieces));
   ImplicitApproxReport rep;
   rep.pieces = options.pieces;
@@ -230,13 +235,13 @@ Status approximate_implicit_blend(const ImplicitBlend& B, const Vec3d (&v)[3],
         if (!cubic_plane_crossing(whole.p[i], dp[i], whole.q[i], dq[i], N, o, tau, t))
           return Status::empty_real_locus;
         Vec3d x = ferguson(whole.p[i], dp[i], whole.q[i], dq[i], t);
-        if (Status st = plane_contour_newton(B, v[i], N, o, x); st != Status::ok) return st;
+        if (Status st = plane_contour_newton(B, w[i], N, o, x); st != Status::ok) return st;
         ends[k][i] = x;
       }
     }
     for (int k = 0; k < m; ++k) {
       ContourPiece P;
-      if (Status st = contour_piece_from_points(B, v, ends[k], ends[k + 1], normals[k],
+      if (Status st = contour_piece_from_points(B, w, ends[k], ends[k + 1], normals[k],
                                                 normals[k + 1], P);
           st != Status::ok)
         return st;

@@ -28,6 +28,8 @@ struct ImplicitApproxOptions {
   double parameter_tolerance = 1e-12;
   int error_nodes_t = 16;     // (87): Gauss-Legendre in t (1..64)
   int error_nodes_u = 32;     // (87): trapezoid on the circle (4..1024)
+  bool two_curves = false;    // Remark 7.5: both branches of v[0]'s contour curve
+                              // and one of v[1]'s (v[2] unused)
 };
 
 struct ImplicitApproxPiece {

@@ -356,14 +356,21 @@ double triangle_quality(const Vec3d& p1, const Vec3d& p2, const Vec3d& p3) {
 
 }  // namespace
 
-Status contour_piece(const ImplicitBlend& B, const Vec3d (&v)[3], ContourPiece& out) {
+namespace {
+
+// The branches: slot i follows the contour curve for v[i]; fixed[i] = -1
+// lets the slot take either P1 point, 0 or 1 prescribes it (Remark 7.5:
+// both branches of one curve).
+Status choose_branches(const ImplicitBlend& B, const Vec3d (&v)[3], const int (&fixed)[3],
+                       ContourPiece& out) {
   PlaneContourPoints P1[3], P2[3];
   Vec3d toward = Vec3d::Zero();
   int nq = 0;
   for (int i = 0; i < 3; ++i) {
     if (Status st = end_contour_points(B, 0, v[i], P1[i]); st != Status::ok) return st;
     if (Status st = end_contour_points(B, 1, v[i], P2[i]); st != Status::ok) return st;
-    if (P1[i].count == 0 || P2[i].count == 0) return Status::empty_real_locus;
+    if (P1[i].count == 0 || P2[i].count == 0 || fixed[i] >= P1[i].count)
+      return Status::empty_real_locus;
     for (int j = 0; j < P2[i].count; ++j, ++nq) toward += P2[i].points[j];
   }
   toward /= double(nq);
@@ -390,7 +397,8 @@ Status contour_piece(const ImplicitBlend& B, const Vec3d (&v)[3], ContourPiece& 
       for (int c = 0; c < P1[2].count; ++c) {
         const int j[3] = {a, b, c};
         bool ok = true;
-        for (int i = 0; i < 3; ++i) ok = ok && pair[i][j[i]] >= 0;
+        for (int i = 0; i < 3; ++i)
+          ok = ok && pair[i][j[i]] >= 0 && (fixed[i] < 0 || fixed[i] == j[i]);
         if (!ok) continue;
         const double qp = triangle_quality(P1[0].points[a], P1[1].points[b], P1[2].points[c]);
         const double qq = triangle_quality(P2[0].points[pair[0][a]], P2[1].points[pair[1][b]],
@@ -408,6 +416,20 @@ Status contour_piece(const ImplicitBlend& B, const Vec3d (&v)[3], ContourPiece& 
     q[i] = P2[i].points[pair[i][choice[i]]];
   }
   return contour_piece_from_points(B, v, p, q, B.f10.n, B.f20.n, out);
+}
+
+}  // namespace
+
+Status contour_piece(const ImplicitBlend& B, const Vec3d (&v)[3], ContourPiece& out) {
+  const int free[3] = {-1, -1, -1};
+  return choose_branches(B, v, free, out);
+}
+
+Status contour_piece_two_curves(const ImplicitBlend& B, const Vec3d& v1, const Vec3d& v2,
+                                ContourPiece& out) {
+  const Vec3d v[3] = {v1, v1, v2};
+  const int fixed[3] = {0, 1, -1};
+  return choose_branches(B, v, fixed, out);
 }
 
 namespace {

@@ -1045,6 +1045,8 @@ typedef struct cyc_implicit_approx_options {
   double function_tolerance, gradient_tolerance, parameter_tolerance;
   int error_nodes_t;       /* (87): Gauss-Legendre in t, 1..64, default 16 */
   int error_nodes_u;       /* (87): trapezoid on the circle, 4..1024, default 32 */
+  int two_curves;          /* Remark 7.5: nonzero = both branches of v1's contour
+                              curve and one of v2's (v3 unused); default 0 */
 } cyc_implicit_approx_options;
 
 /** Omega and the error (87) of the approximation, per piece and in all. */
