@@ -8,6 +8,7 @@
 //    cyc_invert_darboux, value + gradient (C API and core), and
 //    cyc_surface_eval_inverted per point (compare with BM_Eval)
 //  * blends (SPEC §8d) and the blend optimizer (§8e, cyc_optimize_blend)
+//  * the implicit-blend approximation of seed 001 §7.a (BM_ImplicitBlendApprox)
 //
 // Every benchmark reports "allocs_per_iter": heap allocations (malloc family
 // and operator new, counted by alloc_hook.cpp) per iteration of its timed
@@ -965,6 +966,48 @@ void BM_NwayBlend(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Seed 001 §7.a, Example 7.6 (lambda 1/2, n 2): one implicit-blend
+// approximation through the C API (contour points, branch tracing, the
+// Ceres solve of Omega, the degree-15 directrix, make_ringed and the (87)
+// quadrature) with `pieces` = range(0) (1: one piece; 2: refinement (84)).
+void BM_ImplicitBlendApprox(benchmark::State& state) {
+  if (!cyc_optimizer_available()) {
+    state.SkipWithError("no optimizer tier in this build (Ceres not found)");
+    return;
+  }
+  if (!fixture_ok(state)) return;
+  const Fixture& f = fixture();
+  cyc_implicit_blend B{{0, 1, 1, 0, 0, 0, 0, 0, 0, -9},
+                       {1, 1, 2, -2, 0, 0, -12, 12, 0, 28},
+                       {1, 0, 0, 0},
+                       {1, 1, 0, -10},
+                       0.5,
+                       2};
+  const double v[9] = {0, 0, 1, 0, 1, 0, 0, 0.70710678118654752, 0.70710678118654752};
+  cyc_implicit_approx_options o;
+  cyc_implicit_approx_options_init(&o);
+  o.pieces = int(state.range(0));
+  cyc_implicit_approx_report rep{};
+  int bad = CYC_OK;
+  AllocCounter allocs(state);
+  for (auto _ : state) {
+    cyc_surface* S[CYC_MAX_IMPLICIT_PIECES] = {};
+    int count = 0;
+    const int st = cyc_optimize_implicit_blend(f.ctx, &B, v, &o, S, &count, &rep);
+    if (st != CYC_OK && bad == CYC_OK) bad = st;
+    benchmark::DoNotOptimize(S);
+    for (int k = 0; k < count; ++k) cyc_surface_destroy(f.ctx, S[k]);
+  }
+  allocs.finish();
+  if (bad != CYC_OK) {
+    state.SkipWithError(describe("cyc_optimize_implicit_blend", bad, f.ctx).c_str());
+    return;
+  }
+  state.counters["error87"] = rep.error87;
+  state.counters["omega"] = rep.omega;
+  state.SetItemsProcessed(state.iterations());
+}
+
 BENCHMARK(BM_BlendRinged)->Arg(1)->Arg(2)->Arg(3);
 BENCHMARK(BM_NwayBlend);
 BENCHMARK(BM_BlendCanal)->Arg(2)->Arg(3);
@@ -976,5 +1019,6 @@ BENCHMARK_CAPTURE(BM_OptimizeBlend, ringed, CYC_BLEND_RINGED)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_OptimizeBlend, canal, CYC_BLEND_CANAL)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImplicitBlendApprox)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/,
-fuzz_lines/, fuzz_blend/ and fuzz_ringed/.
+fuzz_lines/, fuzz_blend/, fuzz_ringed/ and fuzz_implicit/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -2175,6 +2175,77 @@ def ringed_seeds():
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_implicit
+
+class ImplicitEncoder(Encoder):
+    """Mirrors fuzz_implicit.cpp: handler flag, the blend (mode 0: Example
+    7.6; 1: two cylinders with their perpendicular planes), lambda as k/16,
+    n, then the ops."""
+
+    coord = DarbouxEncoder.coord
+    coords = DarbouxEncoder.coords
+
+    def __init__(self, blend, lambda16, n, ops, handler=True):
+        super().__init__()
+        self.flag(handler)
+        if blend == "example76":
+            self.range(0, 2, 0)
+        else:
+            self.range(0, 2, 1)
+            for point, direction, radius in blend:
+                self.coords(point)
+                self.coords(direction)
+                self.coord(radius)
+        self.range(0, 2, 0)
+        self.range(1, 15, lambda16)
+        self.range(-1, 18, n)
+        assert 1 <= len(ops) <= 4
+        self.range(1, 4, len(ops))
+        for op in ops:
+            op(self)
+
+    def eval(self, x, v=None):
+        self.range(0, 2, 0)
+        self.coords(x)
+        self.flag(v is not None)
+        if v is not None:
+            self.coords(v)
+
+    def contour(self, end, v):
+        self.range(0, 2, 1)
+        self.range(-1, 2, end)
+        self.coords(v)
+
+    def optimize(self, pieces, iters, nodes=4, nt=2, nu=6, v=None, two_curves=False):
+        self.range(0, 2, 2)
+        self.flag(v is not None)
+        if v is not None:
+            self.coords(v)
+        self.range(0, 3, pieces)
+        self.range(0, 3, iters)
+        self.range(1, 6, nodes)
+        self.range(1, 4, nt)
+        self.range(3, 8, nu)
+        self.rarely(False)
+        self.flag(two_curves)
+
+
+def implicit_seeds():
+    seeds = {}
+    seeds["seed-example76"] = ImplicitEncoder("example76", 8, 2, [
+        lambda e: e.contour(0, (0, 0, 1)),
+        lambda e: e.eval((1, 2, 0.5), (0, 0, 1)),
+        lambda e: e.optimize(2, 2),
+    ]).data()
+    cyl = [((0, 0, 0), (1, 0, 0), 3), ((8, 2, 0), (1, 1, 0), 2)]
+    seeds["seed-cylinders"] = ImplicitEncoder(cyl, 8, 2, [
+        lambda e: e.contour(1, (0, 1, 0)),
+        lambda e: e.optimize(1, 1),
+        lambda e: e.optimize(1, 2, two_curves=True),
+    ]).data()
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -2220,4 +2291,5 @@ if __name__ == "__main__":
     write("fuzz_lines", lines_seeds())
     write("fuzz_blend", blend_seeds())
     write("fuzz_ringed", ringed_seeds())
+    write("fuzz_implicit", implicit_seeds())
     write_dictionary()

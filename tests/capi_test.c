@@ -2880,6 +2880,68 @@ static void test_nway(cyc_context* ctx) {
   for (i = 0; i < 3; ++i) cyc_surface_destroy(ctx, R[i]);
 }
 
+/* Seed 001 §7.a: the implicit blend of Example 7.6 (lambda 1/2, n 2). */
+static void test_implicit(cyc_context* ctx) {
+  cyc_implicit_blend B;
+  const double q1[10] = {0, 1, 1, 0, 0, 0, 0, 0, 0, -9};
+  const double q2[10] = {1, 1, 2, -2, 0, 0, -12, 12, 0, 28};
+  const double g1[4] = {1, 0, 0, 0}, g2[4] = {1, 1, 0, -10};
+  const double x[3] = {1, 2, 0.5}, v[3] = {0, 0, 1};
+  const double V[9] = {0, 0, 1, 0, 1, 0, 0, 0.70710678118654752, 0.70710678118654752};
+  const double P[3] = {6, 0, 0}, U[3] = {1, 1, 0};
+  double f = SENT, grad[3] = {SENT, SENT, SENT}, fv = SENT, hv[3] = {SENT, SENT, SENT};
+  double pts[6], cyl[10];
+  int count = -1, whole = -1, k;
+  cyc_surface* S[CYC_MAX_IMPLICIT_PIECES];
+  cyc_implicit_approx_options o;
+  cyc_implicit_approx_report R;
+  memcpy(B.f1, q1, sizeof q1);
+  memcpy(B.f2, q2, sizeof q2);
+  memcpy(B.f10, g1, sizeof g1);
+  memcpy(B.f20, g2, sizeof g2);
+  B.lambda = 0.5;
+  B.n = 2;
+  CHECK_STATUS(ctx, cyc_implicit_blend_eval(ctx, &B, x, &f, grad, v, &fv, hv), CYC_OK);
+  /* f = f1 f20^3 / 2 - f2 f10^3 / 2 at (1, 2, 0.5): f1 = -4.75, f20 = -7,
+     f2 = 49 + 0.5 - 8 = 41.5, f10 = 1. */
+  CHECK(fabs(f - (0.5 * -4.75 * -343.0 - 0.5 * 41.5)) <= 1e-12 * 1000);
+  CHECK(fabs(fv - grad[2]) <= 1e-15 * (1 + fabs(fv)));
+  B.lambda = 1.0;
+  f = SENT;
+  CHECK_STATUS(ctx, cyc_implicit_blend_eval(ctx, &B, x, &f, NULL, NULL, NULL, NULL),
+               CYC_E_INVALID_ARGUMENT);
+  CHECK(f == SENT);
+  B.lambda = 0.5;
+  CHECK_STATUS(ctx, cyc_implicit_contour_points(ctx, &B, 0, v, &count, pts, &whole), CYC_OK);
+  CHECK(count == 2 && whole == 0);
+  CHECK(fabs(fabs(pts[1]) - 3) <= 1e-12 && fabs(pts[0]) <= 1e-12);
+  CHECK_STATUS(ctx, cyc_implicit_cylinder(ctx, P, U, 2.0, cyl), CYC_OK);
+  CHECK(fabs(2 * cyl[3] - q2[3]) <= 1e-12 && fabs(2 * cyl[9] - q2[9]) <= 1e-12);
+  CHECK_STATUS(ctx, cyc_implicit_cylinder(ctx, P, U, -1.0, cyl), CYC_E_INVALID_ARGUMENT);
+  cyc_implicit_approx_options_init(&o);
+  o.pieces = 2;
+  count = -1;
+  if (cyc_optimizer_available()) {
+    CHECK_STATUS(ctx, cyc_optimize_implicit_blend(ctx, &B, V, &o, S, &count, &R), CYC_OK);
+    CHECK(count == 2 && R.pieces == 2);
+    CHECK(R.error87 > 0 && R.error87 < 1);
+    for (k = 0; k < count; ++k) {
+      int kind = 0;
+      CHECK_STATUS(ctx, cyc_surface_kind(ctx, S[k], &kind), CYC_OK);
+      CHECK(kind == CYC_SURFACE_RINGED);
+      cyc_surface_destroy(ctx, S[k]);
+    }
+    o.pieces = 0;
+    count = -1;
+    CHECK_STATUS(ctx, cyc_optimize_implicit_blend(ctx, &B, V, &o, S, &count, &R),
+                 CYC_E_INVALID_ARGUMENT);
+    CHECK(count == -1);
+  } else {
+    CHECK_STATUS(ctx, cyc_optimize_implicit_blend(ctx, &B, V, &o, S, &count, &R),
+                 CYC_E_UNSUPPORTED);
+  }
+}
+
 int main(void) {
   counting_allocator ca;
   cyc_allocator a;
@@ -2907,6 +2969,7 @@ int main(void) {
     test_ringed_dnr(ctx);
     test_ringed_sqrt(ctx);
     test_nway(ctx);
+    test_implicit(ctx);
     cyc_context_destroy(ctx);
   }
   CHECK(ca.allocs > 10);

@@ -2,6 +2,8 @@
 // vector, generic in the scalar, differentiated by Ceres' Jets.
 #include "optim/blend_optimizer.hpp"
 
+#include "cyclide/quadrature.hpp"
+
 #include <ceres/ceres.h>
 
 #include <algorithm>
@@ -26,29 +28,6 @@ namespace {
 // curves to order 3 for s' to order 2 (x_tt needs the frame to order 2).
 constexpr int kOrder = 4;
 using Basis = Taylor<double, kOrder>;
-
-// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n from the
-// Chebyshev-like guess; n <= kMaxQuadrature).
-void gauss_legendre(int n, double* x, double* w) {
-  const double pi = std::acos(-1.0);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = z;  // P_{k-1}, P_k
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n == 1 ? 1.0 : n * (z * p1 - p0) / (z * z - 1);
-      const double step = p1 / dp;
-      z -= step;
-      if (std::abs(step) <= 1e-16) break;
-    }
-    x[i] = z;
-    w[i] = 2.0 / ((1 - z * z) * dp * dp);
-  }
-}
 
 // Everything the residuals need, fixed during the solve.
 struct Problem {

@@ -1140,6 +1140,107 @@ CYC_API int cyc_optimize_pcurve_bump_parameters(cyc_context* ctx, const cyc_ring
                                                 cyc_free_parameter* params, int capacity,
                                                 int* count);
 
+/* ------------------------------------------------------------------ */
+/* Seed 001 §7.a: implicit ringed blends and their approximation       */
+
+/** The implicit blend (73) f = f1 (1 - lambda) f20^(n+1) - f2 lambda
+ *  f10^(n+1) of two quadrics f1, f2 bounded by the planes f10 = 0, f20 = 0.
+ *  A quadric's 10 coefficients are those of
+ *    q0 x^2 + q1 y^2 + q2 z^2 + q3 xy + q4 xz + q5 yz + q6 x + q7 y + q8 z + q9,
+ *  a plane's 4 those of a x + b y + c z + d. */
+typedef struct cyc_implicit_blend {
+  double f1[10];
+  double f2[10];
+  double f10[4];
+  double f20[4];
+  double lambda; /* in (0, 1) */
+  int n;         /* 1..CYC_MAX_IMPLICIT_EXPONENT */
+} cyc_implicit_blend;
+
+#define CYC_MAX_IMPLICIT_EXPONENT 16
+#define CYC_MAX_IMPLICIT_PIECES 8
+
+/** The coefficients of the cylinder of revolution through `point` with
+ *  axis `direction` and radius > 0, or of the cone with apex, axis and
+ *  half-angle in (0, pi/2). CYC_E_INVALID_ARGUMENT for a zero direction or
+ *  radius/angle out of range, CYC_E_NOT_FINITE. coeffs written on success. */
+CYC_API int cyc_implicit_cylinder(cyc_context* ctx, const double point[3],
+                                  const double direction[3], double radius, double coeffs[10]);
+CYC_API int cyc_implicit_cone(cyc_context* ctx, const double apex[3], const double axis[3],
+                              double half_angle, double coeffs[10]);
+
+/** f (73) at x, its gradient (may be NULL) and, with v given (may be
+ *  NULL), the contour function f_v = grad f . v (76) and its gradient
+ *  H v (may be NULL). Statuses: CYC_E_INVALID_ARGUMENT (lambda outside
+ *  (0, 1), n outside 1..16, a zero plane normal or quadratic part),
+ *  CYC_E_NOT_FINITE (input, or a non-finite result),
+ *  CYC_E_DEPENDENT_PLANES (coincident bounding planes). Allocation-free;
+ *  outputs written only on success. */
+CYC_API int cyc_implicit_blend_eval(cyc_context* ctx, const cyc_implicit_blend* blend,
+                                    const double x[3], double* f, double grad[3],
+                                    const double v[3], double* f_v, double grad_f_v[3]);
+
+/** The contour points (77) (end 0: on f10 = 0) or (78) (end 1: on f20 =
+ *  0) for the direction v: up to 2 points (x, y, z each) and *count;
+ *  *whole_circle (may be NULL) is set when every point of the end circle
+ *  qualifies (count 0). CYC_E_SINGULAR_POINT when a point lies on the
+ *  other bounding plane. Allocation-free. */
+CYC_API int cyc_implicit_contour_points(cyc_context* ctx, const cyc_implicit_blend* blend,
+                                        int end, const double v[3], int* count,
+                                        double points[6], int* whole_circle);
+
+/** Options of cyc_optimize_implicit_blend (defaults by _init). */
+typedef struct cyc_implicit_approx_options {
+  int pieces;              /* 1..CYC_MAX_IMPLICIT_PIECES, default 1: cut planes (84) */
+  double psi_weight;       /* w of (81), default 0.01 (Psi scaled by |s2 - s1|^2) */
+  int nodes;               /* Gauss-Legendre nodes of (82), (83): 2..64, default 16 */
+  double length_min_ratio; /* alpha, beta in [min, max] |q - p|: default 0.1, 4 */
+  double length_max_ratio;
+  int max_iterations;      /* default 50 */
+  double function_tolerance, gradient_tolerance, parameter_tolerance;
+  int error_nodes_t;       /* (87): Gauss-Legendre in t, 1..64, default 16 */
+  int error_nodes_u;       /* (87): trapezoid on the circle, 4..1024, default 32 */
+  int two_curves;          /* Remark 7.5: nonzero = both branches of v1's contour
+                              curve and one of v2's (v3 unused); default 0 */
+} cyc_implicit_approx_options;
+
+/** Omega and the error (87) of the approximation, per piece and in all. */
+typedef struct cyc_implicit_approx_report {
+  int pieces;
+  double omega;    /* sum of the pieces' Omega (81) */
+  double error87;  /* (87) of the piecewise surface on [0, 1]: sum error87_piece / pieces */
+  double seconds;
+  double omega_initial[CYC_MAX_IMPLICIT_PIECES]; /* Omega at alpha = beta = |q - p| */
+  double omega_piece[CYC_MAX_IMPLICIT_PIECES];
+  double error87_piece[CYC_MAX_IMPLICIT_PIECES]; /* each piece on its own t in [0, 1] */
+  double alpha[CYC_MAX_IMPLICIT_PIECES][3];      /* the tangent lengths of c_v1..c_v3 */
+  double beta[CYC_MAX_IMPLICIT_PIECES][3];
+  int reverted[CYC_MAX_IMPLICIT_PIECES];         /* 1: the solve did not lower Omega */
+} cyc_implicit_approx_report;
+
+CYC_API void cyc_implicit_approx_options_init(cyc_implicit_approx_options* options);
+
+/** Seed 001 §7.a: approximates the implicit blend by exact rational ringed
+ *  surfaces (kind CYC_SURFACE_RINGED). For the three directions v (9
+ *  numbers, pairwise non-parallel) the contour branches from f10 = 0 to
+ *  f20 = 0 are Ferguson cubics whose tangent lengths Ceres chooses to
+ *  minimize Omega (81)-(83); each surface's circles pass exactly through
+ *  the three cubics (directrix: their circumcentre, a rational curve of
+ *  degree 15). With pieces > 1 the blend is cut by planes (84). Writes
+ *  pieces[0 .. *count - 1] (the caller provides options->pieces slots and
+ *  destroys the handles) and the report (may be NULL). Statuses:
+ *  CYC_E_INVALID_ARGUMENT (options, v), CYC_E_NOT_FINITE, those of the
+ *  blend (cyc_implicit_blend_eval), CYC_E_EMPTY_REAL_LOCUS (a direction
+ *  without contour points on an end plane), CYC_E_COLLINEAR_POINTS,
+ *  CYC_E_NUMERICAL_OVERFLOW (a contour branch could not be traced),
+ *  CYC_E_SINGULAR_POINT. Optimizer tier: allocates; CYC_E_UNSUPPORTED
+ *  without Ceres. Nothing is written on error. */
+CYC_API int cyc_optimize_implicit_blend(cyc_context* ctx, const cyc_implicit_blend* blend,
+                                        const double v[9],
+                                        const cyc_implicit_approx_options* options,
+                                        cyc_surface** pieces, int* count,
+                                        cyc_implicit_approx_report* report);
+
 #ifdef __cplusplus
 }
 #endif
