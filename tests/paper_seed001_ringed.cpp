@@ -857,3 +857,32 @@ TEST(RingedSqrt, StatusesAndSquareRadius) {
   EXPECT_EQ(make_ringed_sqrt(d, n, poly({0, 0, 2, 0, 1}), one, o, nullptr, -1, 1, S),
             Status::singular_point);
 }
+
+// make_ringed_dnr's automatic route keeps a field only if it is defined on
+// the whole domain: Example 6.2's R_3 (n = d3' = (0, 6t^2 - 10t, 6t^2 - 6t
+// + 4)) projects along e3 with sigma = |6t^2 - 10t|, zero at t = 0 in
+// [0, 1]; a later route gives the surface. The explicit projection along
+// e3 still reports the scan's failure.
+TEST(PCurve, AutomaticFieldSkipsRoutesUndefinedOnTheDomain) {
+  RationalCurve d, n;
+  const double dc[12] = {0, 8, -8, 0, 0, 4, 0, -5, -3, 0, 2, 2};
+  const double nc[9] = {0, 0, 4, 0, -10, -6, 0, 6, 6};
+  ASSERT_EQ(make_polynomial_curve(3, dc, d), Status::ok);
+  ASSERT_EQ(make_polynomial_curve(2, nc, n), Status::ok);
+  const CurvePoly rho = poly({1.5, -4.0 / 6}), one = poly({1});
+  RingedFieldOptions e3;
+  e3.method = RingedFieldMethod::projection;
+  Surface S;
+  EXPECT_NE(make_ringed_dnr(d, n, rho, one, e3, nullptr, 0, 1, S), Status::ok);
+  RingedFieldReport rep;
+  ASSERT_EQ(make_ringed_dnr(d, n, rho, one, RingedFieldOptions(), nullptr, 0, 1, S, &rep),
+            Status::ok);
+  EXPECT_NE(rep.method, RingedFieldMethod::automatic);
+  EXPECT_LT(std::abs(rep.v.z()), 1 - 1e-9);  // not the projection along e3
+  for (double t : {0.0, 0.5, 1.0})
+    for (double u : {-1.0, 0.0, 2.0}) {
+      const Vec3d X = point(S, t, u), D = d.point(t), N = n.point(t).normalized();
+      EXPECT_NEAR((X - D).norm(), 1.5 - 4.0 * t / 6, 1e-12);
+      EXPECT_NEAR((X - D).dot(N), 0.0, 1e-12);
+    }
+}

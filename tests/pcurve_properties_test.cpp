@@ -126,6 +126,25 @@ RC_GTEST_PROP(PCurveProperties, BlendReproducesTheEndJetsOrIsRefused, ()) {
     RC_ASSERT(std::abs(K.rho - J[e].rho) <= tol * scale);
     RC_ASSERT(std::abs(K.drho - J[e].drho) <= tol * scale);
   }
+  // P-biarc (47): the two pieces join C^1 at tau in the circle family
+  // (d, d', n, n', rho, rho' of both pieces agree there): values, n and n'
+  // to 1e-9 of the pieces' scale at the join; d' and rho' to 1e-7 (they
+  // are read back through each piece's rational c, the second one built in
+  // r = 1 - t: 3.2e-9 seen in 30 000 cases).
+  if (count == 2) {
+    RingedJet L, R;
+    RC_PRE(ringed_jet(P[0], o.tau, L) == Status::ok && ringed_jet(P[1], o.tau, R) == Status::ok);
+    const double scale = 1 + L.d.norm() + L.dd.norm() + L.n.norm() + L.dn.norm() + L.rho +
+                         std::abs(L.drho);
+    RC_PRE(scale <= 1e6);  // an ill-conditioned end blew the pieces up (judged above)
+    RC_LOG() << "tau " << o.tau << " scale " << scale;
+    RC_ASSERT(rel(L.d, R.d, scale) <= 1e-9);
+    RC_ASSERT(rel(L.dd, R.dd, scale) <= 1e-7);
+    RC_ASSERT(rel(L.n, R.n, scale) <= 1e-9);
+    RC_ASSERT(rel(L.dn, R.dn, scale) <= 1e-9);
+    RC_ASSERT(std::abs(L.rho - R.rho) <= 1e-9 * scale);
+    RC_ASSERT(std::abs(L.drho - R.drho) <= 1e-7 * scale);
+  }
   // A point of a piece lies on its circle (d, n, rho).
   const Surface& Q = P[*rc::gen::inRange(0, count)];
   const double t = Q.u0 + (Q.u1 - Q.u0) * (*rc::gen::inRange(0, 17)) / 16.0;

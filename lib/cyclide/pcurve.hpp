@@ -133,7 +133,10 @@ Status ringed_field(const RationalCurve& n, const RingedFieldOptions& options, R
 // Props. 3.1/3.2, Example 3.3, Theorem 3.5. Statuses of ringed_field,
 // ringed_curve and make_ringed (*bad_u where the domain scan fails: where
 // sigma or the SOS denominator vanishes the field is undefined and c
-// escapes, reported as that scan's status).
+// escapes, reported as that scan's status). `automatic` tries the routes
+// (projection along e3, e1, e2; Example 3.3's two directions; SOS) until
+// one gives a surface on the whole domain, and reports the first failure
+// of a route whose field existed if none does.
 Status make_ringed_dnr(const RationalCurve& d, const RationalCurve& n, const CurvePoly& rho_num,
                        const CurvePoly& rho_den, const RingedFieldOptions& options,
                        const Mobius* circle_f, double u0, double u1, Surface& out,

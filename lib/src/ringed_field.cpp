@@ -315,17 +315,73 @@ Status ringed_field(const RationalCurve& n, const RingedFieldOptions& options, R
   return Status::ok;
 }
 
+namespace {
+
+// The surface (3) through c = d + rho f for one field.
+Status ringed_with_field(const RationalCurve& d, const RationalCurve& n, const CurvePoly& rho_num,
+                         const CurvePoly& rho_den, const RationalField& f,
+                         const Mobius* circle_f, double u0, double u1, Surface& out,
+                         double* bad_u) {
+  RationalCurve c;
+  if (Status st = ringed_curve(d, rho_num, rho_den, f, c); st != Status::ok) return st;
+  return make_ringed(d, n, c, circle_f, u0, u1, out, bad_u);
+}
+
+}  // namespace
+
 Status make_ringed_dnr(const RationalCurve& d, const RationalCurve& n, const CurvePoly& rho_num,
                        const CurvePoly& rho_den, const RingedFieldOptions& options,
                        const Mobius* circle_f, double u0, double u1, Surface& out,
                        RingedFieldReport* report, double* bad_u) {
-  RationalField f;
-  RingedFieldReport rep;
-  if (Status st = ringed_field(n, options, f, &rep); st != Status::ok) return st;
-  RationalCurve c;
-  if (Status st = ringed_curve(d, rho_num, rho_den, f, c); st != Status::ok) return st;
   Surface S;
-  if (Status st = make_ringed(d, n, c, circle_f, u0, u1, S, bad_u); st != Status::ok) return st;
+  RingedFieldReport rep;
+  RationalField f;
+  if (options.method != RingedFieldMethod::automatic) {
+    if (Status st = ringed_field(n, options, f, &rep); st != Status::ok) return st;
+    if (Status st = ringed_with_field(d, n, rho_num, rho_den, f, circle_f, u0, u1, S, bad_u);
+        st != Status::ok)
+      return st;
+  } else {
+    // Automatic: the routes in ringed_field's order, each kept only if its
+    // field is defined on the whole domain (a projection's sigma = |n x v|
+    // may vanish inside [u0, u1], e.g. Example 6.2's R_3 along e3 at t =
+    // 0); the first route's failure is reported if none works.
+    RingedFieldOptions o;
+    Status first = Status::ok;
+    double first_bad = NAN;
+    bool built = false;
+    const int deg = numerator_degree(n);
+    if (deg < 0) return Status::invalid_argument;
+    for (int route = 0; route < 6 && !built; ++route) {
+      if (route <= 2) {
+        o.method = RingedFieldMethod::projection;
+        o.v = route == 0 ? Vec3d::UnitZ() : route == 1 ? Vec3d::UnitX() : Vec3d::UnitY();
+      } else if (route <= 4) {
+        if (deg > 2) continue;
+        o.method = RingedFieldMethod::quadratic;
+        o.which = route - 3;
+      } else {
+        o.method = RingedFieldMethod::sos;
+      }
+      RingedFieldReport r;
+      Status st = ringed_field(n, o, f, &r);
+      double bad = NAN;
+      if (st == Status::ok)
+        st = ringed_with_field(d, n, rho_num, rho_den, f, circle_f, u0, u1, S, &bad);
+      if (st == Status::ok) {
+        rep = r;
+        built = true;
+      } else if (first == Status::ok && st != Status::not_pythagorean &&
+                 !(st == Status::invalid_argument && o.method == RingedFieldMethod::quadratic)) {
+        first = st;  // the first route whose field existed but failed
+        first_bad = bad;
+      }
+    }
+    if (!built) {
+      if (bad_u) *bad_u = first_bad;
+      return first == Status::ok ? Status::not_pythagorean : first;
+    }
+  }
   out = S;
   if (report) *report = rep;
   return Status::ok;
