@@ -652,6 +652,62 @@ static void ringed_dnr_demos(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_curve_destroy(ctx, phn);
 }
 
+/* Seed 001 sec. 3.d (Theorem 3.6: rho = sqrt(R), R not a square) and sec.
+ * 7.a (Example 7.6: the implicit blend (73) of two cylinders approximated
+ * by exact ringed surfaces, one piece and two). */
+static void sqrt_and_implicit_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  const double dc[6] = {0, 1, 0, 1, 0, 0.5}, nc[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const double R[3] = {2, 0, 1};
+  const double q1[10] = {0, 1, 1, 0, 0, 0, 0, 0, 0, -9};
+  const double q2[10] = {1, 1, 2, -2, 0, 0, -12, 12, 0, 28};
+  const double g1[4] = {1, 0, 0, 0}, g2[4] = {1, 1, 0, -10};
+  const double V[9] = {0, 0, 1, 0, 1, 0, 0, 0.70710678118654752, 0.70710678118654752};
+  cyc_curve *d, *n;
+  cyc_surface* S;
+  cyc_surface* P[CYC_MAX_IMPLICIT_PIECES];
+  cyc_ringed_sqrt_report rep;
+  cyc_implicit_blend B;
+  cyc_implicit_approx_options o;
+  cyc_implicit_approx_report ar;
+  int pieces, count = 0, k;
+  char name[64];
+  fprintf(report, "\nRinged surface with rho = sqrt(R) (seed 001 sec. 3.d, Theorem 3.6)\n");
+  check(ctx, cyc_curve_create_polynomial(ctx, 1, dc, 3, &d), "d");
+  check(ctx, cyc_curve_create_polynomial(ctx, 2, nc, 3, &n), "n");
+  check(ctx, cyc_ringed_sqrt_create(ctx, d, n, 2, R, 0, NULL, NULL, NULL, -2, 2, &S, &rep),
+        "cyc_ringed_sqrt_create");
+  fprintf(report, "  n = (1, t, t^2), R = 2 + t^2: conic a^2 + |n|^2 b^2 = R c^2 solved "
+                  "numerically, remainder %.1e (reduced conic of degree %d)\n",
+          rep.conic_residual, rep.conic_degree);
+  write_surface(ctx, S, dir, "ringed_sqrt_radius", NULL, report);
+  cyc_surface_destroy(ctx, S);
+  cyc_curve_destroy(ctx, d);
+  cyc_curve_destroy(ctx, n);
+
+  if (!cyc_optimizer_available()) return;
+  fprintf(report, "\nImplicit blend of two cylinders approximated by ringed surfaces "
+                  "(seed 001 sec. 7.a, Example 7.6; lambda = 1/2, n = 2: not given in the paper)\n");
+  memcpy(B.f1, q1, sizeof q1);
+  memcpy(B.f2, q2, sizeof q2);
+  memcpy(B.f10, g1, sizeof g1);
+  memcpy(B.f20, g2, sizeof g2);
+  B.lambda = 0.5;
+  B.n = 2;
+  for (pieces = 1; pieces <= 2; ++pieces) {
+    cyc_implicit_approx_options_init(&o);
+    o.pieces = pieces;
+    check(ctx, cyc_optimize_implicit_blend(ctx, &B, V, &o, P, &count, &ar),
+          "cyc_optimize_implicit_blend");
+    fprintf(report, "  %d piece(s): Omega %.4g, error (87) %.3e [paper: 2.1e-2 with one part, "
+                    "3.7e-4 with two, for its unstated lambda, n]\n", pieces, ar.omega, ar.error87);
+    for (k = 0; k < count; ++k) {
+      snprintf(name, sizeof name, "implicit_ex76_%dpiece_%d", pieces, k);
+      write_surface(ctx, P[k], dir, name, NULL, report);
+      cyc_surface_destroy(ctx, P[k]);
+    }
+  }
+}
+
 /* (d, n, rho) on [0, 1] with the automatic field, else Example 3.3's
  * (quadratic n): the automatic route may project along an axis where sigma
  * vanishes in [0, 1] (Example 6.2's R_3: |n x e3| = |6t^2 - 10t|). */
@@ -816,6 +872,7 @@ int main(int argc, char** argv) {
   pcurve_demos(ctx, dir, report);
   ringed_dnr_demos(ctx, dir, report);
   nway_demo(ctx, dir, report);
+  sqrt_and_implicit_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {
