@@ -2864,7 +2864,21 @@ static void test_nway(cyc_context* ctx) {
     CHECK(jet_gap(&J0, &rep.end_jet[i]) < 1e-9);
     CHECK(jet_gap(&J1, &rep.sphere_jet[i]) < 1e-9);
     CHECK(fabs(rep.sphere_jet[i].rho - 2 * 2.6 * sqrt(0.19 * 0.81)) < 1e-13);
+    CHECK(rep.lambda[i] == 0.19);
     cyc_surface_destroy(ctx, B[2 * i]);
+  }
+  /* auto_lambda: the library chooses disjoint circles (lambda[] ignored). */
+  {
+    cyc_nway_options oa = o;
+    CHECK(oa.auto_lambda == 0);
+    oa.auto_lambda = 1;
+    for (k = 0; k < 3; ++k) oa.lambda[k] = NAN;
+    CHECK_STATUS(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &oa, B, counts, &rep), CYC_OK);
+    CHECK(rep.min_gap > 0.1);
+    for (i = 0; i < 3; ++i) {
+      CHECK(rep.lambda[i] > 0 && rep.lambda[i] < 0.5);
+      if (counts[i] == 1 && B[2 * i] && B[2 * i] != SURF_SENT) cyc_surface_destroy(ctx, B[2 * i]);
+    }
   }
   /* The sphere for display. */
   CHECK_STATUS(ctx, cyc_nway_sphere_create(ctx, center, 0, axis, &sphere), CYC_E_INVALID_ARGUMENT);

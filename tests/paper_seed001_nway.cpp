@@ -212,6 +212,39 @@ TEST(NwayExample62, JoiningCirclesOneAndThreeMeetAtLambdaPointTwo) {
   }
 }
 
+// §6 "lambda_i chosen so that the circles c_i do not intersect": with
+// auto_lambda the library chooses them (theta_i = 0.45 min_j angle(axis_i,
+// axis_j)); on Example 6.2 every gap is then at least a tenth of its axes'
+// angle, and the blends are C^1.
+TEST(NwayExample62, AutomaticLambdasKeepTheCirclesApart) {
+  Surface R[3];
+  example62(R);
+  const Surface* ends[3] = {&R[0], &R[1], &R[2]};
+  const double u[3] = {1, 1, 1};
+  NwayOptions o = example62_options();
+  o.auto_lambda = true;
+  for (double& l : o.lambda) l = 7;  // ignored
+  Surface B[kMaxNwayEnds][2];
+  int count[kMaxNwayEnds] = {};
+  NwayReport rep;
+  ASSERT_EQ(make_ringed_nway_blend(ends, u, 3, o, B, count, &rep), Status::ok);
+  const NwaySphere& S = rep.sphere;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_GT(S.lambda[i], 0.0);
+    EXPECT_LT(S.lambda[i], 0.5);
+    for (int j = 0; j < 3; ++j)
+      if (j != i) {
+        const double phi = std::acos(S.n_star[i].dot(S.n_star[j]));
+        EXPECT_GE(S.gap[i][j], 0.1 * phi - 1e-12);
+        EXPECT_FALSE(S.nested[i][j]);
+      }
+  }
+  // c_1 and c_3 (axes 105.97 deg apart) are the closest pair: both get
+  // theta = 0.45 * 105.97 deg.
+  EXPECT_NEAR(std::acos(1 - 2 * S.lambda[0]) * 180 / kPi, 0.45 * 105.96985, 1e-3);
+  expect_c1(ends, u, 3, B, count, rep, 1e-9);
+}
+
 // The blends of Example 6.2 (facing side, the paper's lambda = 0.2 with the
 // intersection check relaxed; and lambda = 0.19 with it): built, C^1.
 TEST(NwayExample62, BlendsAreC1AtBothEnds) {

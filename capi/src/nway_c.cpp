@@ -42,6 +42,7 @@ void put_report(cyc_nway_report& C, const NwayReport& R) {
     put3(C.n_star[i], S.n_star[i]);
     C.distance[i] = S.distance[i];
     C.theta[i] = S.theta[i];
+    C.lambda[i] = S.lambda[i];
     for (int j = 0; j < kMaxNwayEnds; ++j) {
       C.gap[i][j] = S.gap[i][j];
       C.nested[i][j] = S.nested[i][j] ? 1 : 0;
@@ -72,6 +73,7 @@ Outcome options_of(const char* fn, const cyc_nway_options* c, int n, NwayOptions
   o.side = NwaySide(c->side);
   o.require_disjoint = c->require_disjoint != 0;
   o.auto_v = c->auto_v != 0;
+  o.auto_lambda = c->auto_lambda != 0;
   return pcurve_blend_options_of(fn, &c->blend, nullptr, o.blend);
 }
 
@@ -118,6 +120,7 @@ void cyc_nway_options_init(cyc_nway_options* options) {
   options->require_disjoint = d.require_disjoint ? 1 : 0;
   options->auto_v = d.auto_v ? 1 : 0;
   cyc_pcurve_blend_options_init(&options->blend);
+  options->auto_lambda = d.auto_lambda ? 1 : 0;
 }
 
 int cyc_blend_ringed_nway(cyc_context* ctx, const cyc_surface* const* ends, const double* end_u,

@@ -44,6 +44,13 @@ struct NwayOptions {
   double lambda[kMaxNwayEnds] = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5};  // in (0, 1)
   NwaySide side = NwaySide::facing;
   bool require_disjoint = true;  // intersecting joining circles are an error
+  // Choose the lambda_i ("lambda_i chosen so that the circles c_i do not
+  // intersect", §6) instead of taking options.lambda: theta_i = 0.45 min_j
+  // angle(axis_i, axis_j), so theta_i + theta_j <= 0.9 angle(axis_i,
+  // axis_j) and every gap is at least a tenth of its axes' angle;
+  // lambda_i = (1 - cos theta_i) / 2. (The largest caps with that margin;
+  // their size is not otherwise optimized.)
+  bool auto_lambda = false;
   bool auto_v = true;  // each blend's projection direction v = n_a x n_b (normalized),
                        // else blend.v for every blend
   RingedBlendOptions blend;  // sign, tau (degree 6 or P-biarc), v, bump of every blend
@@ -63,6 +70,7 @@ struct NwaySphere {
                             // end circles off the sphere (reported, not enforced)
   Vec3d n_star[kMaxNwayEnds] = {};      // (66): (d_i - s) / |d_i - s|
   double distance[kMaxNwayEnds] = {};   // |d_i - s|
+  double lambda[kMaxNwayEnds] = {};     // the lambda_i used (options' or chosen)
   double theta[kMaxNwayEnds] = {};      // angular radius of c_i: cos = 1 - 2 lambda_i
   // Signed angular gap between c_i and c_j (radians): > 0 disjoint (the
   // geodesic distance between the circles), <= 0 intersecting. nested: the

@@ -99,10 +99,23 @@ Status sphere_center(const RingedJet* ends, int n, const NwayOptions& o, NwaySph
   return input_ok(S.s) ? Status::ok : Status::numerical_overflow;
 }
 
+// options.auto_lambda: theta_i = 0.45 min_j angle(axis_i, axis_j).
+void choose_lambdas(const NwayOptions& o, NwaySphere& S) {
+  for (int i = 0; i < S.n; ++i) {
+    double phi = M_PI;
+    for (int j = 0; j < S.n; ++j)
+      if (j != i) {
+        const Vec3d a = cap_axis(S.n_star[i], o.side), b = cap_axis(S.n_star[j], o.side);
+        phi = std::min(phi, std::atan2(a.cross(b).norm(), a.dot(b)));
+      }
+    S.lambda[i] = 0.5 * (1 - std::cos(0.45 * phi));
+  }
+}
+
 // The joining circles' angular radii and pairwise gaps.
 void circle_test(const NwayOptions& o, NwaySphere& S) {
   S.min_gap = HUGE_VAL;
-  for (int i = 0; i < S.n; ++i) S.theta[i] = std::acos(1 - 2 * o.lambda[i]);
+  for (int i = 0; i < S.n; ++i) S.theta[i] = std::acos(1 - 2 * S.lambda[i]);
   for (int i = 0; i < S.n; ++i)
     for (int j = i + 1; j < S.n; ++j) {
       bool nested = false;
@@ -135,7 +148,8 @@ Status nway_sphere(const RingedJet* ends, int n, const NwayOptions& o, NwaySpher
   if (!ends) return Status::null_argument;
   if (n < 3 || n > kMaxNwayEnds) return Status::invalid_argument;
   for (int i = 0; i < n; ++i)
-    if (!jet_ok(ends[i]) || !input_ok(o.lambda[i])) return Status::not_finite;
+    if (!jet_ok(ends[i]) || (!o.auto_lambda && !input_ok(o.lambda[i])))
+      return Status::not_finite;
   if (!input_ok(o.alpha) || !input_ok(o.s) || !input_ok(o.r) || !input_ok(o.r_fraction))
     return Status::not_finite;
   if (o.r < 0 || (o.r == 0 && !(o.r_fraction > 0 && o.r_fraction < 1)))
@@ -157,8 +171,13 @@ Status nway_sphere(const RingedJet* ends, int n, const NwayOptions& o, NwaySpher
   S.r = o.r > 0 ? o.r : o.r_fraction * S.bound;
   for (int i = 0; i < n; ++i)
     S.n_star[i] = S.distance[i] > 0 ? Vec3d((ends[i].d - S.s) / S.distance[i]) : Vec3d::Zero();
+  if (o.auto_lambda) {
+    choose_lambdas(o, S);  // 0 for coincident axes: refused below
+  } else {
+    for (int i = 0; i < n; ++i) S.lambda[i] = o.lambda[i];
+  }
   for (int i = 0; i < n; ++i)
-    if (!(o.lambda[i] > 0 && o.lambda[i] < 1)) {
+    if (!(S.lambda[i] > 0 && S.lambda[i] < 1)) {
       out = S;
       return Status::bad_domain;
     }
@@ -236,7 +255,7 @@ Status make_ringed_nway_blend(const Surface* const* ends, const double* end_u, i
     // S_i's direction of travel at lambda_i: d*' / (2r), (66).
     const Vec3d travel = o.side == NwaySide::facing ? Vec3d(-S.n_star[i]) : S.n_star[i];
     RingedJet& b = rep.sphere_jet[i];
-    b = nway_sphere_jet(S.s, S.r, S.n_star[i], o.lambda[i], o.side, orientation(a, travel));
+    b = nway_sphere_jet(S.s, S.r, S.n_star[i], S.lambda[i], o.side, orientation(a, travel));
     RingedBlendOptions bo = o.blend;
     if (o.auto_v) bo.v = blend_direction(a, b);
     rep.v[i] = bo.v;

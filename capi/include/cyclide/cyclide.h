@@ -792,6 +792,9 @@ typedef struct cyc_nway_options {
   int require_disjoint; /* nonzero (default): intersecting joining circles are an error */
   int auto_v;  /* nonzero (default): each blend projects along n_a x n_b; 0: blend.v */
   cyc_pcurve_blend_options blend; /* sign, tau and v of every blend */
+  int auto_lambda; /* nonzero: lambda[] ignored, each lambda_i chosen so that the circles
+                      keep a gap of at least a tenth of their axes' angle (theta_i = 0.45
+                      min_j angle(axis_i, axis_j)); default 0 */
 } cyc_nway_options;
 CYC_API void cyc_nway_options_init(cyc_nway_options* options);
 
@@ -815,6 +818,7 @@ typedef struct cyc_nway_report {
   cyc_ringed_jet sphere_jet[CYC_NWAY_MAX_ENDS];     /* S_i at lambda_i (67), as interpolated */
   double v[CYC_NWAY_MAX_ENDS][3];                   /* each blend's projection direction */
   int failed_end;                                   /* the blend that failed, -1: none */
+  double lambda[CYC_NWAY_MAX_ENDS];                 /* the lambda_i used (given or chosen) */
 } cyc_nway_report;
 
 /** Seed 001 §6, eqs. (62)-(67): the n-way blend (3 <= n <= CYC_NWAY_MAX_ENDS)
