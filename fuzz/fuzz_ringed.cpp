@@ -750,6 +750,28 @@ void op_nway(Input& in, Ctx& c) {
       cyc_surface_destroy(c.ctx, sphere);
     }
   }
+  // auto_lambda (one byte, read last): OK means the chosen circles are
+  // disjoint and every lambda lies in (0, 1); errors write nothing.
+  if (!nulls && !null_options && in.flag()) {
+    cyc_nway_options oa = o;
+    oa.auto_lambda = 1;
+    cyc_surface* Ba[18];
+    int ca[9];
+    for (cyc_surface*& b : Ba) b = kSentinel;
+    for (int& k : ca) k = -7;
+    cyc_nway_report ra;
+    const int sa = cyc_blend_ringed_nway(c.ctx, ends, end_u, n, &oa, Ba, ca, &ra);
+    c.check("cyc_blend_ringed_nway (auto_lambda)", sa);
+    if (sa != CYC_OK) {
+      for (int j = 0; j < 18; ++j) FZ_CHECK(Ba[j] == kSentinel, "auto_lambda: written on error");
+    } else {
+      FZ_CHECK(ra.min_gap > 0, "auto_lambda: circles meet (gap %g)", ra.min_gap);
+      for (int i = 0; i < n; ++i) {
+        FZ_CHECK(ra.lambda[i] > 0 && ra.lambda[i] < 1, "auto_lambda: lambda %g", ra.lambda[i]);
+        for (int k = 0; k < ca[i]; ++k) cyc_surface_destroy(c.ctx, Ba[2 * i + k]);
+      }
+    }
+  }
   for (cyc_surface* x : R) cyc_surface_destroy(c.ctx, x);
 }
 
