@@ -227,6 +227,18 @@ inline RingedJet jet_of(const cyc_ringed_jet& j) {
   return J;
 }
 
+// The inverse of jet_of.
+inline cyc_ringed_jet c_jet_of(const RingedJet& J) {
+  cyc_ringed_jet C;
+  put3(C.d, J.d);
+  put3(C.dd, J.dd);
+  put3(C.n, J.n);
+  put3(C.dn, J.dn);
+  C.rho = J.rho;
+  C.drho = J.drho;
+  return C;
+}
+
 // The P-curve blend's options and bump (either may be NULL: defaults).
 inline Outcome pcurve_blend_options_of(const char* fn, const cyc_pcurve_blend_options* options,
                                        const cyc_directrix_bump* bump, RingedBlendOptions& o) {

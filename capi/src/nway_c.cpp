@@ -19,15 +19,6 @@ static_assert(CYC_NWAY_SIDE_FACING == int(NwaySide::facing) &&
 
 namespace {
 
-void put_jet(cyc_ringed_jet& C, const RingedJet& J) {
-  put3(C.d, J.d);
-  put3(C.dd, J.dd);
-  put3(C.n, J.n);
-  put3(C.dn, J.dn);
-  C.rho = J.rho;
-  C.drho = J.drho;
-}
-
 void put_report(cyc_nway_report& C, const NwayReport& R) {
   C = cyc_nway_report();
   const NwaySphere& S = R.sphere;
@@ -47,8 +38,8 @@ void put_report(cyc_nway_report& C, const NwayReport& R) {
       C.gap[i][j] = S.gap[i][j];
       C.nested[i][j] = S.nested[i][j] ? 1 : 0;
     }
-    put_jet(C.end_jet[i], R.end_jet[i]);
-    put_jet(C.sphere_jet[i], R.sphere_jet[i]);
+    C.end_jet[i] = c_jet_of(R.end_jet[i]);
+    C.sphere_jet[i] = c_jet_of(R.sphere_jet[i]);
     put3(C.v[i], R.v[i]);
   }
   C.min_gap = S.min_gap;

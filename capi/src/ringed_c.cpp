@@ -222,14 +222,7 @@ int cyc_surface_ringed_jet(cyc_context* ctx, const cyc_surface* surface, double 
     REQUIRE(out);
     RingedJet J;
     if (Status s = ringed_jet(surface->surface, u, J); s != Status::ok) return from_core(fn, s);
-    cyc_ringed_jet C;
-    put3(C.d, J.d);
-    put3(C.dd, J.dd);
-    put3(C.n, J.n);
-    put3(C.dn, J.dn);
-    C.rho = J.rho;
-    C.drho = J.drho;
-    *out = C;
+    *out = c_jet_of(J);
     return ok();
   });
 }

@@ -11,7 +11,8 @@ namespace cyclide {
 inline namespace v0 {
 namespace detail {
 
-inline double max_abs(const CurvePoly& p) {
+template <int Cap>
+double max_abs(const Poly<double, Cap>& p) {
   double m = 0;
   for (int k = 0; k <= p.deg; ++k) m = std::max(m, std::abs(p.c[k]));
   return m;
@@ -21,6 +22,16 @@ inline bool finite(const CurvePoly& p) {
   for (int k = 0; k <= p.deg; ++k)
     if (!std::isfinite(p.c[k])) return false;
   return true;
+}
+
+// |N|^2 = N.N (the caller keeps 2 deg N within kMaxCurveDegree).
+inline CurvePoly square_norm(const CurvePoly (&N)[3]) {
+  CurvePoly s, t;
+  for (const CurvePoly& p : N) {
+    multiply(p, p, t);
+    s = s + t;
+  }
+  return s;
 }
 
 // The homogeneous power-form polynomials (x, y, z, w) of a curve

@@ -20,6 +20,7 @@ using CPoly = Complex[kMaxCurveDegree + 1];
 
 using detail::finite;
 using detail::max_abs;
+using detail::square_norm;
 
 // The numerator N of n in power form, trimmed; false for a point or line
 // element.
@@ -27,15 +28,6 @@ bool numerator(const RationalCurve& n, CurvePoly (&N)[3], CurvePoly& w) {
   if (n.kind != CurveKind::rational) return false;
   detail::power_form(n, N, w);
   return true;
-}
-
-CurvePoly square_norm(const CurvePoly (&N)[3]) {
-  CurvePoly s, t;
-  for (const CurvePoly& p : N) {
-    multiply(p, p, t);  // degrees are checked by the callers
-    s = s + t;
-  }
-  return s;
 }
 
 // g = sqrt(lead) prod (t - z_k) over the m roots of |N|^2 = q (degree 2m)
@@ -268,6 +260,26 @@ Status field_by_quadratic(const RationalCurve& n, int which, RationalField& f,
   return projection_field(n, rep.v, f);
 }
 
+// The routes of RingedFieldMethod::automatic, in order (k = 0..5):
+// projection along e3, e1, e2 (Prop. 3.2); Example 3.3's directions 0 and
+// 1 (only for deg n <= 2); SOS (20)-(23). False if route k does not apply.
+constexpr int kAutomaticRoutes = 6;
+bool automatic_route(int k, int deg, RingedFieldOptions& o) {
+  o = RingedFieldOptions();
+  if (k <= 2) {
+    o.method = RingedFieldMethod::projection;
+    o.v = k == 0 ? Vec3d::UnitZ() : k == 1 ? Vec3d::UnitX() : Vec3d::UnitY();
+    return true;
+  }
+  if (k <= 4) {
+    o.method = RingedFieldMethod::quadratic;
+    o.which = k - 3;
+    return deg <= 2;
+  }
+  o.method = RingedFieldMethod::sos;
+  return true;
+}
+
 }  // namespace
 
 Status ringed_field(const RationalCurve& n, const RingedFieldOptions& options, RationalField& f,
@@ -287,23 +299,13 @@ Status ringed_field(const RationalCurve& n, const RingedFieldOptions& options, R
       st = sos_field(n, out, &rep.sos);
       break;
     case RingedFieldMethod::automatic: {
+      // The first route that does not answer not_pythagorean.
       const int deg = numerator_degree(n);
       if (deg < 0) return Status::invalid_argument;
       st = Status::not_pythagorean;
-      for (const Vec3d& e : {Vec3d(0, 0, 1), Vec3d(1, 0, 0), Vec3d(0, 1, 0)}) {
-        rep = RingedFieldReport();
-        st = field_by_projection(n, e, out, rep);
-        if (st != Status::not_pythagorean) break;
-      }
-      if (st == Status::not_pythagorean && deg <= 2) {
-        rep = RingedFieldReport();
-        st = field_by_quadratic(n, 0, out, rep);
-      }
-      if (st == Status::not_pythagorean) {
-        rep = RingedFieldReport();
-        rep.method = RingedFieldMethod::sos;
-        st = sos_field(n, out, &rep.sos);
-      }
+      RingedFieldOptions o;
+      for (int k = 0; k < kAutomaticRoutes && st == Status::not_pythagorean; ++k)
+        if (automatic_route(k, deg, o)) st = ringed_field(n, o, out, &rep);
       break;
     }
     default:
@@ -352,17 +354,8 @@ Status make_ringed_dnr(const RationalCurve& d, const RationalCurve& n, const Cur
     bool built = false;
     const int deg = numerator_degree(n);
     if (deg < 0) return Status::invalid_argument;
-    for (int route = 0; route < 6 && !built; ++route) {
-      if (route <= 2) {
-        o.method = RingedFieldMethod::projection;
-        o.v = route == 0 ? Vec3d::UnitZ() : route == 1 ? Vec3d::UnitX() : Vec3d::UnitY();
-      } else if (route <= 4) {
-        if (deg > 2) continue;
-        o.method = RingedFieldMethod::quadratic;
-        o.which = route - 3;
-      } else {
-        o.method = RingedFieldMethod::sos;
-      }
+    for (int k = 0; k < kAutomaticRoutes && !built; ++k) {
+      if (!automatic_route(k, deg, o)) continue;
       RingedFieldReport r;
       Status st = ringed_field(n, o, f, &r);
       double bad = NAN;

@@ -77,12 +77,6 @@ struct Factored {
   int nS = 0;
 };
 
-double wide_max(const WidePoly& p) {
-  double m = 0;
-  for (int k = 0; k <= p.deg; ++k) m = std::max(m, std::abs(p.c[k]));
-  return m;
-}
-
 // Factor p >= 0 (Factored). empty_real_locus if p < 0 somewhere (negative
 // lead, odd degree, a real root of odd multiplicity); not_pythagorean if the
 // clustered roots do not account for the degree (too ill-conditioned).
@@ -303,8 +297,8 @@ double diagonal_remainder(const DiagonalConic& Q, const WidePoly& x, const WideP
   if (!mul(x, x, x2) || !mul(y, y, y2) || !mul(z, z, z2) || !mul(A, x2, Ax2) ||
       !mul(B, y2, By2) || !mul(C, z2, Cz2))
     return HUGE_VAL;
-  const double scale = std::max({wide_max(Ax2), wide_max(By2), wide_max(Cz2)});
-  return scale > 0 ? wide_max(Ax2 + By2 - Cz2) / scale : HUGE_VAL;
+  const double scale = std::max({max_abs(Ax2), max_abs(By2), max_abs(Cz2)});
+  return scale > 0 ? max_abs(Ax2 + By2 - Cz2) / scale : HUGE_VAL;
 }
 
 Status solve_diagonal_conic(const DiagonalConic& Q, WidePoly& x, WidePoly& y, WidePoly& z) {
@@ -346,8 +340,8 @@ double conic_remainder(const WidePoly& a, const WidePoly& b, const WidePoly& c, 
       !mul(P, c2, Pc2))
     return HUGE_VAL;
   E = a2 + Nb2 - Pc2;
-  const double scale = std::max({wide_max(a2), wide_max(Nb2), wide_max(Pc2)});
-  return scale > 0 ? wide_max(E) / scale : HUGE_VAL;
+  const double scale = std::max({max_abs(a2), max_abs(Nb2), max_abs(Pc2)});
+  return scale > 0 ? max_abs(E) / scale : HUGE_VAL;
 }
 
 // a, b, c = fa x, fb y, fc z (step 4's substitutions).
@@ -370,14 +364,20 @@ using RefineMatrix =
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRefineCols, kMaxRefineCols>;
 using RefineVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRefineCols, 1>;
 
-void refine_conic(const ConicFactors& F, const WidePoly& N, const WidePoly& P, WidePoly& x,
-                  WidePoly& y, WidePoly& z, double& residual) {
+// The state (x, y, z), its composition (a, b, c), remainder E and relative
+// residual is carried from step to step (each accepted step was evaluated).
+struct ConicIterate {
+  WidePoly x, y, z, a, b, c, E;
+  double residual = HUGE_VAL;
+};
+
+void refine_conic(const ConicFactors& F, const WidePoly& N, const WidePoly& P,
+                  ConicIterate& s) {
+  const WidePoly &x = s.x, &y = s.y, &z = s.z, &a = s.a, &b = s.b, &c = s.c, &E = s.E;
   const int cols = x.deg + y.deg + z.deg + 3;
   if (cols > kMaxRefineCols) return;
-  for (int it = 0; it < 4 && residual > 1e-15; ++it) {
-    WidePoly a, b, c, E, ga, gb, gc, t;
-    if (!F.compose(x, y, z, a, b, c)) return;
-    conic_remainder(a, b, c, N, P, E);
+  for (int it = 0; it < 4 && s.residual > 1e-15; ++it) {
+    WidePoly ga, gb, gc, t;
     // dE/dx_i = 2 a fa t^i, dE/dy_i = 2 N b fb t^i, dE/dz_i = -2 P c fc t^i.
     if (!mul(a, F.fa, ga) || !mul(N, b, t) || !mul(t, F.fb, gb) || !mul(P, c, t) ||
         !mul(t, F.fc, gc))
@@ -396,14 +396,14 @@ void refine_conic(const ConicFactors& F, const WidePoly& N, const WidePoly& P, W
     Eigen::JacobiSVD<RefineMatrix> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
     const RefineVector d = svd.solve(rhs);
     if (!d.allFinite()) return;
-    WidePoly x1 = x, y1 = y, z1 = z, a1, b1, c1, E1;
-    for (int i = 0; i <= x.deg; ++i) x1.c[i] += d(i);
-    for (int i = 0; i <= y.deg; ++i) y1.c[i] += d(x.deg + 1 + i);
-    for (int i = 0; i <= z.deg; ++i) z1.c[i] += d(x.deg + y.deg + 2 + i);
-    if (!F.compose(x1, y1, z1, a1, b1, c1)) return;
-    const double r1 = conic_remainder(a1, b1, c1, N, P, E1);
-    if (!(r1 < residual)) return;
-    x = x1, y = y1, z = z1, residual = r1;
+    ConicIterate next = s;
+    for (int i = 0; i <= x.deg; ++i) next.x.c[i] += d(i);
+    for (int i = 0; i <= y.deg; ++i) next.y.c[i] += d(x.deg + 1 + i);
+    for (int i = 0; i <= z.deg; ++i) next.z.c[i] += d(x.deg + y.deg + 2 + i);
+    if (!F.compose(next.x, next.y, next.z, next.a, next.b, next.c)) return;
+    next.residual = conic_remainder(next.a, next.b, next.c, N, P, next.E);
+    if (!(next.residual < s.residual)) return;
+    s = next;
   }
 }
 
@@ -445,15 +445,17 @@ Status solve_norm_conic(const CurvePoly& N, const CurvePoly& P, WidePoly& a, Wid
   WidePoly t1;
   if (!mul(from_roots(G, ng), F.fc, t1) || !mul(t1, F.fb, F.fa)) return Status::degree_too_high;
   z.trim();
-  const double s = wide_max(z);
+  const double s = max_abs(z);
   if (!(s > 0) || !std::isfinite(s)) return Status::not_pythagorean;
   x = x.scaled(1 / s), y = y.scaled(1 / s), z = z.scaled(1 / s);
   // The remainder of (*) with the given N and P, polished.
-  WidePoly E;
-  if (!F.compose(x, y, z, a, b, c)) return Status::degree_too_high;
-  residual = conic_remainder(a, b, c, widen(N), widen(P), E);
-  refine_conic(F, widen(N), widen(P), x, y, z, residual);
-  if (!F.compose(x, y, z, a, b, c)) return Status::degree_too_high;
+  ConicIterate it{x, y, z, {}, {}, {}, {}};
+  if (!F.compose(x, y, z, it.a, it.b, it.c)) return Status::degree_too_high;
+  const WidePoly Nw = widen(N), Pw = widen(P);
+  it.residual = conic_remainder(it.a, it.b, it.c, Nw, Pw, it.E);
+  refine_conic(F, Nw, Pw, it);
+  a = it.a, b = it.b, c = it.c;
+  residual = it.residual;
   a.trim(), b.trim(), c.trim();
   if (!(residual <= kMaxConicResidual)) return Status::not_pythagorean;
   return Status::ok;
@@ -511,11 +513,9 @@ Status sqrt_radius_field(const RationalCurve& n, const CurvePoly& R_num, const C
   }
   CurvePoly Nv[3], wn;
   detail::power_form(n, Nv, wn);
-  CurvePoly N, t;
-  for (const CurvePoly& p : Nv) {
-    if (!multiply(p, p, t)) return Status::degree_too_high;
-    N = N + t;
-  }
+  for (const CurvePoly& p : Nv)
+    if (2 * p.deg > kMaxCurveDegree) return Status::degree_too_high;
+  CurvePoly N = detail::square_norm(Nv);
   N.trim();
   if (N.is_zero()) return Status::invalid_argument;
   WidePoly a, b, c;
