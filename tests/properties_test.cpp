@@ -521,9 +521,8 @@ RC_GTEST_PROP(Properties, CanalPointsLieOnSphereAndNormalIsRadial, ()) {
 
 // ====================================================================== 3
 // Ringed surfaces (PRRS): where x_u x x_v != 0 the normal is a unit vector
-// orthogonal to x_u and x_v.
-RC_GTEST_PROP(Properties, RingedNormalIsUnitAndOrthogonal, ()) {
-  const Case C = gen_case(gen_prrs_kind());
+// orthogonal to x_u and x_v, oriented as x_u x x_v.
+void check_ringed_normal(const Case& C) {
   const double u = gen_u(C), v = gen_v();
   Point P;
   const Status st = eval_point(C.S, u, v, P);
@@ -535,6 +534,25 @@ RC_GTEST_PROP(Properties, RingedNormalIsUnitAndOrthogonal, ()) {
   const double kappa = P.xu.norm() * P.xv.norm() / cross;  // 1 / sin(angle)
   CHECK_TOL("3 n.x_u = 0", std::abs(P.n.dot(P.xu)), kOrthogonalTol * P.xu.norm() * kappa);
   CHECK_TOL("3 n.x_v = 0", std::abs(P.n.dot(P.xv)), kOrthogonalTol * P.xv.norm() * kappa);
+  // ... and it points along x_u x x_v, not against it (the evaluator forms
+  // it without x_u and x_v, orienting it by the sign of f's determinant).
+  if (kappa < 1e6)
+    CHECK_TOL("3 n along x_u x x_v", 1 - P.n.dot(P.xu.cross(P.xv)) / cross, 1e-6);
+}
+
+RC_GTEST_PROP(Properties, RingedNormalIsUnitAndOrthogonal, ()) {
+  check_ringed_normal(gen_case(gen_prrs_kind()));
+}
+
+// The same with a random Mobius f varying with u (the rows' f_u != 0, and
+// either orientation of v).
+RC_GTEST_PROP(Properties, RingedNormalWithMobiusParameter, ()) {
+  Case C;
+  gen_inputs(gen_prrs_kind(), C);
+  const Mobius f = gen_mobius(C.u0, C.u1);
+  PRE("3 build f", build(C, &f, C.S) == Status::ok);
+  PRE("3 condition", well_conditioned(C, C.L));
+  check_ringed_normal(C);
 }
 
 // ====================================================================== 4

@@ -119,11 +119,11 @@ struct CompiledFrame {
       R.d[l] = d[l];
     }
     // a != 0 and not tiny, d != 0 (check_frame's other conditions).
-    R.aa = dot(R.a, R.a);
-    const double dd = dot(R.d, R.d);
+    R.aa = dot3(R.a, R.a);
+    const double dd = dot3(R.d, R.d);
     if (!(R.aa >= kMinAxisLength * kMinAxisLength) || !(dd > 0)) return false;
-    R.ad = dot(R.a, R.d);
-    cross(R.a, R.d, R.axd);
+    R.ad = dot3(R.a, R.d);
+    cross3(R.a, R.d, R.axd);
     R.alpha = f4[0];
     R.beta = f4[1];
     R.gamma = f4[2];
@@ -135,11 +135,11 @@ struct CompiledFrame {
         D.a[l] = sa[N][l];
         D.d[l] = d_u[l];
       }
-      D.aa = 2.0 * dot(R.a, D.a);
-      D.ad = dot(D.a, R.d) + dot(R.a, D.d);
+      D.aa = 2.0 * dot3(R.a, D.a);
+      D.ad = dot3(D.a, R.d) + dot3(R.a, D.d);
       double t1[3], t2[3];
-      cross(D.a, R.d, t1);
-      cross(R.a, D.d, t2);
+      cross3(D.a, R.d, t1);
+      cross3(R.a, D.d, t2);
       for (int l = 0; l < 3; ++l) D.axd[l] = t1[l] + t2[l];
       D.alpha = D.beta = D.gamma = D.delta = 0.0;
     }
@@ -166,16 +166,6 @@ struct CompiledFrame {
   // PRCS spine to order N+1); false if not trusted at u.
   template <int N>
   bool series(double u, Lane4 (&so)[N + 2], Lane4 (&sa)[N + 1], Lane4 (&sp)[N + 1]) const;
-
- private:
-  static double dot(const double (&x)[3], const double (&y)[3]) {
-    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-  }
-  static void cross(const double (&x)[3], const double (&y)[3], double (&z)[3]) {
-    z[0] = x[1] * y[2] - x[2] * y[1];
-    z[1] = x[2] * y[0] - x[0] * y[2];
-    z[2] = x[0] * y[1] - x[1] * y[0];
-  }
 };
 
 template <int N>

@@ -39,52 +39,95 @@ inline namespace v0 {
 
 namespace {
 
-// One chunk of results in structure-of-arrays form (vectorizes).
+constexpr int kNormalLag = 8;
+
+// One chunk of results in structure-of-arrays form (vectorizes). Every
+// array is there whatever is wanted: the unused ones only take stack, and
+// dropping them moved the used ones against each other in the caches
+// (20 instead of 16 cycles per ringed point with normals, measured).
 struct Chunk {
   double x[3][kChunk], xu[3][kChunk], xv[3][kChunk], n[3][kChunk];
-  double singular[kChunk];
+  double c[kChunk], s[kChunk];  // the rotation's cos and sin / |a| (ringed normals)
 };
 
-// Evaluate the chunk's circle parameters s1, s0 (count <= kChunk) on a row.
+// The rotations (CircleParameter) of a chunk's values of v, as arrays.
+struct ChunkRotations {
+  double s1[kChunk], s0[kChunk], W[kChunk], G[kChunk], W2[kChunk], G2[kChunk],
+      WG2[kChunk];
+
+  // The rotations of f's coefficients in R (s1, s0 set).
+  CYC_ALWAYS_INLINE void form(const RotationData& R, int count) {
+    for (int i = 0; i < count; ++i) {
+      const CircleParameter q = circle_rotation(R, s1[i], s0[i]);
+      W[i] = q.W;
+      G[i] = q.G;
+      W2[i] = q.W2;
+      G2[i] = q.G2;
+      WG2[i] = q.WG2;
+    }
+  }
+  CYC_ALWAYS_INLINE CircleParameter operator[](int i) const {
+    return CircleParameter{s1[i], s0[i], W[i], G[i], W2[i], G2[i], WG2[i]};
+  }
+};
+
+// Evaluate the chunk's rotations Q (count <= kChunk) on a row with
+// constants C; returns the number of singular (ringed) normals.
 template <bool DU, bool DV, bool NORMAL, bool CANAL>
-CYC_ALWAYS_INLINE void eval_chunk(const CircleRow& row, const double* s1, const double* s0,
-                                  int count, Chunk& out) {
+CYC_ALWAYS_INLINE std::int64_t eval_chunk(const CircleRow& row, const CircleConstants& C,
+                                          const ChunkRotations& Q, int count, Chunk& out) {
   const RotationData R = row.r, D = row.r_u;  // local copies: no aliasing with out
   const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
   const double inv_radius = row.inv_radius;
-  // Ringed normals in a second loop over x_u and the v-direction: one loop
-  // doing both has a dependency chain (division, cross product, square root,
-  // division) too long for the CPU to overlap iterations.
-  constexpr bool split = NORMAL && !CANAL;
-  constexpr bool du = DU || split, dv = DV || split;
+  // Ringed normals in two more loops over the points' (c, s): direction,
+  // then length (one loop doing all had a dependency chain — division,
+  // cross product, square root, division — too long for the CPU to overlap
+  // iterations).
+  constexpr bool ringed = NORMAL && !CANAL;
+  std::int64_t nsingular = 0;
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
   for (int i = 0; i < count; ++i) {
     PointResult P;
-    eval_point<du, dv, NORMAL && !split, CANAL>(R, D, k, inv_radius, s1[i], s0[i], P);
+    eval_point<DU, DV, NORMAL && CANAL, CANAL>(R, D, k, inv_radius, C, Q[i], P);
     for (int j = 0; j < 3; ++j) {
       out.x[j][i] = P.x[j];
-      if (du) out.xu[j][i] = P.xu[j];
-      if (dv) out.xv[j][i] = split ? P.xv_dir[j] : P.xv[j];
-      if (NORMAL && !split) out.n[j][i] = P.n[j];
+      if constexpr (DU) out.xu[j][i] = P.xu[j];
+      if constexpr (DV) out.xv[j][i] = P.xv[j];
+      if constexpr (NORMAL && CANAL) out.n[j][i] = P.n[j];
+    }
+    if constexpr (ringed) {
+      out.c[i] = P.c;
+      out.s[i] = P.s;
     }
   }
-  if (split) {
+  if constexpr (ringed) {
+    auto direction = [&](int i) {
+      double m[3];
+      ringed_normal_direction(C, out.c[i], out.s[i], m);
+      for (int j = 0; j < 3; ++j) out.n[j][i] = m[j];
+    };
+    auto normalize = [&](int i) {
+      const double m[3] = {out.n[0][i], out.n[1][i], out.n[2][i]};
+      double n[3], singular;
+      unit_normal(m, C.singular_floor2, n, singular);
+      for (int j = 0; j < 3; ++j) out.n[j][i] = n[j];
+      nsingular += singular != 0.0 ? 1 : 0;
+    };
+    constexpr int L = kNormalLag;
+    const int lead = count < L ? count : L;
+    for (int i = 0; i < lead; ++i) direction(i);
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
-    for (int i = 0; i < count; ++i) {
-      const double xu[3] = {out.xu[0][i], out.xu[1][i], out.xu[2][i]};
-      const double xv[3] = {out.xv[0][i], out.xv[1][i], out.xv[2][i]};
-      double n[3];
-      ringed_normal(xu, xv, n, out.singular[i]);
-      for (int j = 0; j < 3; ++j) {
-        out.n[j][i] = n[j];
-        if (DV) out.xv[j][i] = s0[i] * s0[i] * xv[j];
-      }
+    for (int i = L; i < count; ++i) {
+      direction(i);
+      normalize(i - L);
     }
+    for (int i = count - lead; i < count; ++i) normalize(i);
   }
+  return nsingular;
 }
 
 // Copy n doubles to dst with non-temporal stores where dst allows it: a
@@ -114,21 +157,25 @@ CYC_ALWAYS_INLINE void transpose4(const double* x, const double* y, const double
   __builtin_memcpy(&X, x, sizeof X);
   __builtin_memcpy(&Y, y, sizeof Y);
   __builtin_memcpy(&Z, z, sizeof Z);
+  // Two in-lane unpacks, two blends and two 128-bit lane moves (no
+  // general permutes):
+  //   xy = x0 y0 x2 y2, yz = y1 z1 y3 z3, zx = z0 x1 z2 x3,
+  //   x0 y0 z0 x1 = (xy.lo, zx.lo), y1 z1 x2 y2 = (yz.lo, xy.hi), z2 x3 y3 z3 = (zx.hi, yz.hi).
 #if defined(__clang__)
-  const V4 xy = __builtin_shufflevector(X, Y, 0, 4, 1, 5);  // x0 y0 x1 y1
-  const V4 yz = __builtin_shufflevector(Y, Z, 1, 5, 2, 6);  // y1 z1 y2 z2
-  const V4 xy3 = __builtin_shufflevector(X, Y, 3, 7, 3, 7); // x3 y3 x3 y3
-  const V4 o0 = __builtin_shufflevector(xy, Z, 0, 1, 4, 2);
-  const V4 o1 = __builtin_shufflevector(yz, X, 0, 1, 6, 2);
-  const V4 o2 = __builtin_shufflevector(Z, xy3, 2, 4, 5, 3);
+  const V4 xy = __builtin_shufflevector(X, Y, 0, 4, 2, 6);
+  const V4 yz = __builtin_shufflevector(Y, Z, 1, 5, 3, 7);
+  const V4 zx = __builtin_shufflevector(Z, X, 0, 5, 2, 7);
+  const V4 o0 = __builtin_shufflevector(xy, zx, 0, 1, 4, 5);
+  const V4 o1 = __builtin_shufflevector(yz, xy, 0, 1, 6, 7);
+  const V4 o2 = __builtin_shufflevector(zx, yz, 2, 3, 6, 7);
 #else
   typedef long long M4 __attribute__((vector_size(32)));
-  const V4 xy = __builtin_shuffle(X, Y, M4{0, 4, 1, 5});
-  const V4 yz = __builtin_shuffle(Y, Z, M4{1, 5, 2, 6});
-  const V4 xy3 = __builtin_shuffle(X, Y, M4{3, 7, 3, 7});
-  const V4 o0 = __builtin_shuffle(xy, Z, M4{0, 1, 4, 2});
-  const V4 o1 = __builtin_shuffle(yz, X, M4{0, 1, 6, 2});
-  const V4 o2 = __builtin_shuffle(Z, xy3, M4{2, 4, 5, 3});
+  const V4 xy = __builtin_shuffle(X, Y, M4{0, 4, 2, 6});
+  const V4 yz = __builtin_shuffle(Y, Z, M4{1, 5, 3, 7});
+  const V4 zx = __builtin_shuffle(Z, X, M4{0, 5, 2, 7});
+  const V4 o0 = __builtin_shuffle(xy, zx, M4{0, 1, 4, 5});
+  const V4 o1 = __builtin_shuffle(yz, xy, M4{0, 1, 6, 7});
+  const V4 o2 = __builtin_shuffle(zx, yz, M4{2, 3, 6, 7});
 #endif
   __builtin_memcpy(dst, &o0, sizeof o0);
   __builtin_memcpy(dst + 4, &o1, sizeof o1);
@@ -158,26 +205,41 @@ CYC_ALWAYS_INLINE void store(const double (*soa)[kChunk], int count, const Strid
   }
 }
 
-// A block of rows: per chunk of v the circle parameters are formed once and
-// used by every row of the block.
+// f's coefficients are the same on both rows (bit for bit).
+CYC_ALWAYS_INLINE bool same_f(const RotationData& x, const RotationData& y) {
+  return x.alpha == y.alpha && x.beta == y.beta && x.gamma == y.gamma && x.delta == y.delta;
+}
+
+// A block of rows: the circles' constants are formed once per row; per
+// chunk of v the circle parameters (s1, s0) are formed once for the block,
+// and so are the rotations when f is the same on every row (f constant in
+// u), else once per row.
 template <bool DU, bool DV, bool NORMAL, bool CANAL>
 std::size_t grid_block(const CircleRow* rows, int nrows, std::size_t first_row,
                        const double* vs, std::size_t nv, const GridOut& out) {
+  constexpr bool ringed = NORMAL && !CANAL;
+  CircleConstants C[kGridBlockRows];
+  bool shared = true;
+  for (int r = 0; r < nrows; ++r) {
+    const RotationData& R = rows[r].r;
+    circle_constants<ringed>(R, rows[r].r_u, 2.0 * (R.beta * R.gamma - R.alpha * R.delta), C[r]);
+    shared = shared && same_f(R, rows[0].r);
+  }
   Chunk c;
-  double s1[kChunk], s0[kChunk];
+  ChunkRotations Q;
   std::size_t singular = 0;
   for (std::size_t j = 0; j < nv; j += kChunk) {
     const int count = int(nv - j < std::size_t(kChunk) ? nv - j : kChunk);
-    for (int i = 0; i < count; ++i) circle_parameter(vs[j + i], s1[i], s0[i]);
+    for (int i = 0; i < count; ++i) circle_parameter(vs[j + i], Q.s1[i], Q.s0[i]);
+    if (shared) Q.form(rows[0].r, count);
     for (int r = 0; r < nrows; ++r) {
-      eval_chunk<DU, DV, NORMAL, CANAL>(rows[r], s1, s0, count, c);
-      if (NORMAL && !CANAL)
-        for (int i = 0; i < count; ++i) singular += c.singular[i] != 0.0;
+      if (!shared) Q.form(rows[r].r, count);
+      singular += std::size_t(eval_chunk<DU, DV, NORMAL, CANAL>(rows[r], C[r], Q, count, c));
       const std::size_t k0 = (first_row + std::size_t(r)) * nv + j;
       if (out.points.data) store(c.x, count, out.points, k0, out.stream);
-      if (DU) store(c.xu, count, out.du, k0, out.stream);
-      if (DV) store(c.xv, count, out.dv, k0, out.stream);
-      if (NORMAL) store(c.n, count, out.normals, k0, out.stream);
+      if constexpr (DU) store(c.xu, count, out.du, k0, out.stream);
+      if constexpr (DV) store(c.xv, count, out.dv, k0, out.stream);
+      if constexpr (NORMAL) store(c.n, count, out.normals, k0, out.stream);
     }
   }
 #if defined(CYC_X86_64)
@@ -192,7 +254,10 @@ CYC_ALWAYS_INLINE void point(const CircleRow& row, double v, PointResult& P) {
   circle_parameter(v, s1, s0);
   const RotationData& R = row.r;
   const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
-  eval_point<DU, DV, NORMAL, CANAL>(R, row.r_u, k, row.inv_radius, s1, s0, P);
+  CircleConstants C;
+  circle_constants<NORMAL && !CANAL>(R, row.r_u, k, C);
+  eval_point<DU, DV, NORMAL, CANAL>(R, row.r_u, k, row.inv_radius, C,
+                                    circle_rotation(R, s1, s0), P);
 }
 
 // ------------------------------------------------------------ single points
@@ -235,9 +300,8 @@ CYC_ALWAYS_INLINE void put3(const Lane4& x, double (&dst)[3]) {
 template <bool DU, bool DV, bool NORMAL, bool CANAL>
 CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4], double u,
                                    double v, PointResult& P) {
-  constexpr bool need_du = DU || (NORMAL && !CANAL);
-  constexpr bool need_dv = DV || (NORMAL && !CANAL);
-  constexpr int N = need_du ? 1 : 0;
+  constexpr bool ringed = NORMAL && !CANAL;
+  constexpr int N = DU || ringed ? 1 : 0;
   // The row: rotation data at u (CompiledFrame::row).
   Lane4 so[N + 2], sa[N + 1], sp[N + 1];
   if (!F.series<N>(u, so, sa, sp) || !CompiledFrame::bounded<N>(so, sa, sp)) return false;
@@ -246,30 +310,42 @@ CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4]
   if (!(aa >= kMinAxisLength * kMinAxisLength) || !(dd > 0)) return false;
   const double ad = dot3(a, d);
   const Lane4 axd = cross3(a, d);
-  // The point (eval_point): q = W + G a, x = o + r.
+  // The circle's constants (circle_constants).
+  const double inv_aa = 1.0 / aa;
+  const double q = ad * inv_aa;
+  const Lane4 a0 = splat(q) * a, a1 = d - a0;
+  // The rotation of v (circle_rotation).
   const double alpha = f4[0], beta = f4[1], gamma = f4[2], delta = f4[3];
+  const double k = 2.0 * (beta * gamma - alpha * delta);
   double s1, s0;
   circle_parameter(v, s1, s0);
   const double W = alpha * s1 + beta * s0, G = gamma * s1 + delta * s0;
-  const double W2 = W * W, G2 = G * G, WG = W * G;
-  const double inv = 1.0 / (W2 + G2 * aa);
-  const double cd = W2 - G2 * aa, ca = 2.0 * G2 * ad, cx = 2.0 * WG;
-  const Lane4 r = (splat(cd) * d + splat(ca) * a + splat(cx) * axd) * splat(inv);
+  const double W2 = W * W, G2 = G * G, WG2 = 2.0 * (W * G);
+  // The point (eval_point).
+  const double G2aa = G2 * aa;
+  const double inv = 1.0 / (W2 + G2aa);
+  const double cd = W2 - G2aa;
+  P.c = cd * inv;
+  P.s = WG2 * inv;
+  const Lane4 r = a0 + splat(P.c) * a1 + splat(P.s) * axd;
   put3(o + r, P.x);
-  Lane4 xv{}, xu{};
-  if (need_dv) {  // the rotation rate about a (see eval_point)
-    const double k = 2.0 * (beta * gamma - alpha * delta);
-    xv = splat(k * inv) * cross3(a, r);
-    put3(xv, P.xv_dir);
-    if (DV) put3(splat(s0 * s0) * xv, P.xv);
+  if (DV) put3(splat(k * inv * (s0 * s0)) * cross3(a, r), P.xv);  // the rotation rate about a
+  // The rotation data's u-derivatives (CompiledFrame::row's second half).
+  Lane4 o_u{}, a_u{}, d_u{}, axd_u{};
+  double aa_u = 0, ad_u = 0;
+  if (N == 1) {
+    o_u = so[N];
+    a_u = sa[N];
+    d_u = sp[N] - so[N];
+    aa_u = 2.0 * dot3(a, a_u);
+    ad_u = dot3(a_u, d) + dot3(a, d_u);
+    axd_u = cross3(a_u, d) + cross3(a, d_u);
   }
-  if (need_du) {
+  if (DU) {
     // f is constant in u: its u-derivatives are the row's zeros, kept in
     // the formula so that every rounding matches eval_point's.
     const double zero = 0.0;
-    const Lane4 o_u = so[N], a_u = sa[N], d_u = sp[N] - so[N];
-    const double aa_u = 2.0 * dot3(a, a_u), ad_u = dot3(a_u, d) + dot3(a, d_u);
-    const Lane4 axd_u = cross3(a_u, d) + cross3(a, d_u);
+    const double ca = 2.0 * G2 * ad, cx = WG2;
     const double Wu = zero * s1 + zero * s0, Gu = zero * s1 + zero * s0;
     const double W2u = 2.0 * W * Wu, G2u = 2.0 * G * Gu, WGu = Wu * G + W * Gu;
     const double den_u = W2u + G2u * aa + G2 * aa_u;
@@ -277,18 +353,30 @@ CYC_ALWAYS_INLINE bool frame_point(const CompiledFrame& F, const double (&f4)[4]
     const double ca_u = 2.0 * (G2u * ad + G2 * ad_u), cx_u = 2.0 * WGu;
     const Lane4 num_u = splat(cd_u) * d + splat(cd) * d_u + splat(ca_u) * a +
                         splat(ca) * a_u + splat(cx_u) * axd + splat(cx) * axd_u;
-    xu = o_u + (num_u - splat(den_u) * r) * splat(inv);
-    if (DU) put3(xu, P.xu);
+    put3(o_u + (num_u - splat(den_u) * r) * splat(inv), P.xu);
   }
   if (NORMAL) {
     if (CANAL) {  // (x - s)/r
       put3(r * splat(1.0 / std::sqrt(dd)), P.n);
       P.singular = 0.0;
-    } else {  // ringed_normal on vectors
-      const Lane4 c = cross3(xu, xv);
-      const double len2 = dot3(c, c), ref2 = dot3(xu, xu) * dot3(xv, xv);
-      const double ok = len2 > kSingularTol * kSingularTol * ref2 && len2 > 0 ? 1.0 : 0.0;
-      put3(c * splat(ok / std::sqrt(len2 + (1.0 - ok))), P.n);
+    } else {  // circle_constants' ringed part, ringed_normal_direction, unit_normal
+      const double q_u = (ad_u * aa - ad * aa_u) * (inv_aa * inv_aa);
+      const double h = 0.5 * aa_u * inv_aa;
+      const double sg = k > 0 ? 1.0 : (k < 0 ? -1.0 : 0.0);
+      const Lane4 a0_u = splat(q_u) * a + splat(q) * a_u;
+      const Lane4 e0 = o_u + a0_u, u1 = d_u - a0_u, u2 = axd_u - splat(h) * axd;
+      const Lane4 t1 = splat(sg) * axd, t2 = splat(sg) * (splat(aa) * d - splat(ad) * a);
+      const Lane4 u1t1 = cross3(u1, t1);
+      const Lane4 k0 = u1t1, k1 = cross3(e0, t1), k2 = -cross3(e0, t2);
+      const Lane4 k3 = -cross3(u2, t2) - splat(aa) * u1t1;
+      const Lane4 k4 = cross3(u2, t1) - cross3(u1, t2);
+      const double M = std::sqrt(dot3(e0, e0)) + std::sqrt(dot3(u1, u1) + dot3(u2, u2) * inv_aa);
+      const double floor2 = singular_floor2(M, dot3(axd, axd));
+      const double s2 = P.s * P.s, cs = P.c * P.s;
+      const Lane4 m = k0 + splat(P.c) * k1 + splat(P.s) * k2 + splat(s2) * k3 + splat(cs) * k4;
+      const double len2 = dot3(m, m);
+      const double ok = len2 > floor2 ? 1.0 : 0.0;
+      put3(m * splat(ok / std::sqrt(len2 > floor2 ? len2 : floor2)), P.n);
       P.singular = 1.0 - ok;
     }
   }
