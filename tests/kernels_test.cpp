@@ -149,5 +149,52 @@ TEST(Kernels, GridStorePathsGiveIdenticalBits) {
   }
 }
 
+// f varying in u (the grid forms the rotations per row instead of once per
+// v for the block): grids still give single points' bits, on both surface
+// kinds, with every output; ringed normals are unit and along x_u x x_v.
+TEST(Kernels, GridWithMobiusVaryingInUGivesSinglePointBits) {
+  // f = ((1 + u) v + u/2) / ((u/3) v + 2): its determinant 2 + 2u - u^2/6
+  // changes sign at u = 6 - sqrt(48) ~ -0.93, so rows of both orientations
+  // of v occur (the first row of the grid is u = -0.95).
+  const double alpha[2] = {1, 1}, beta[2] = {0, 0.5}, gamma[2] = {0, 1.0 / 3}, delta[2] = {2, 0};
+  Mobius f;
+  ASSERT_EQ(make_mobius(1, alpha, beta, gamma, delta, f), Status::ok);
+  RationalCurve c[3];
+  const double(*rows[3])[3] = {kP1, kP2, kP3};
+  for (int i = 0; i < 3; ++i) ASSERT_EQ(make_polynomial_curve(3, &rows[i][0][0], c[i]), Status::ok);
+  for (bool canal : {true, false}) {
+    Surface s;
+    ASSERT_EQ(canal ? make_prcs(c[0], c[1], &f, -1, 1, s) : make_prrs(c[0], c[1], c[2], &f, -1, 1, s),
+              Status::ok);
+    const std::size_t nu = 21, nv = 300;  // two blocks of rows, two chunks of v
+    std::vector<double> us(nu), vs(nv);
+    for (std::size_t i = 0; i < nu; ++i) us[i] = -0.95 + 1.9 * double(i) / double(nu - 1);
+    for (std::size_t j = 0; j < nv; ++j) vs[j] = std::tan(3.14159 * ((j + 0.5) / nv - 0.5));
+    std::vector<double> x(3 * nu * nv), xu(3 * nu * nv), xv(3 * nu * nv), n(3 * nu * nv);
+    std::size_t singular = 1;
+    ASSERT_EQ(s.eval_grid(us.data(), nu, vs.data(), nv, {x.data(), 3}, {xu.data(), 3},
+                          {xv.data(), 3}, {n.data(), 3}, &singular),
+              Status::ok);
+    EXPECT_EQ(singular, 0u);
+    for (std::size_t i = 0; i < nu; ++i)
+      for (std::size_t j = 0; j < nv; j += 13) {
+        double px[3], pu[3], pv[3], pn[3];
+        ASSERT_EQ(s.eval(us[i], vs[j], {px, pu, pv, pn}), Status::ok);
+        const std::size_t k = 3 * (i * nv + j);
+        EXPECT_EQ(std::memcmp(px, &x[k], sizeof px), 0) << canal << " " << i << " " << j;
+        EXPECT_EQ(std::memcmp(pu, &xu[k], sizeof pu), 0) << canal << " " << i << " " << j;
+        EXPECT_EQ(std::memcmp(pv, &xv[k], sizeof pv), 0) << canal << " " << i << " " << j;
+        EXPECT_EQ(std::memcmp(pn, &n[k], sizeof pn), 0) << canal << " " << i << " " << j;
+        if (canal) continue;
+        const double m[3] = {pu[1] * pv[2] - pu[2] * pv[1], pu[2] * pv[0] - pu[0] * pv[2],
+                             pu[0] * pv[1] - pu[1] * pv[0]};
+        const double len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+        EXPECT_NEAR(std::sqrt(pn[0] * pn[0] + pn[1] * pn[1] + pn[2] * pn[2]), 1.0, 1e-14);
+        EXPECT_NEAR((pn[0] * m[0] + pn[1] * m[1] + pn[2] * m[2]) / len, 1.0, 1e-9)
+            << i << " " << j;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace cyclide
