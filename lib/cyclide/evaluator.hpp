@@ -101,6 +101,12 @@ struct CircleParameter {
   double W2, G2, WG2;  // W^2, G^2, 2 W G
 };
 
+// k = 2 (beta gamma - alpha delta): x_v = k s0^2 a x (x - o) / den, and its
+// sign orients the ringed normal.
+CYC_ALWAYS_INLINE double rotation_rate_factor(const RotationData& R) {
+  return 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
+}
+
 CYC_ALWAYS_INLINE CircleParameter circle_rotation(const RotationData& R, double s1, double s0) {
   CircleParameter q;
   q.s1 = s1;

@@ -77,12 +77,13 @@ template <bool DU, bool DV, bool NORMAL, bool CANAL>
 CYC_ALWAYS_INLINE std::int64_t eval_chunk(const CircleRow& row, const CircleConstants& C,
                                           const ChunkRotations& Q, int count, Chunk& out) {
   const RotationData R = row.r, D = row.r_u;  // local copies: no aliasing with out
-  const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
+  const double k = rotation_rate_factor(R);
   const double inv_radius = row.inv_radius;
-  // Ringed normals in two more loops over the points' (c, s): direction,
-  // then length (one loop doing all had a dependency chain — division,
-  // cross product, square root, division — too long for the CPU to overlap
-  // iterations).
+  // Ringed normals in one more loop over the points' (c, s), its
+  // normalization kNormalLag points behind its direction: the square root
+  // and division of one point overlap the multiplications of the next (one
+  // loop doing point, direction and length had a dependency chain too long
+  // for the CPU to overlap iterations).
   constexpr bool ringed = NORMAL && !CANAL;
   std::int64_t nsingular = 0;
 #if defined(__GNUC__) && !defined(__clang__)
@@ -222,7 +223,7 @@ std::size_t grid_block(const CircleRow* rows, int nrows, std::size_t first_row,
   bool shared = true;
   for (int r = 0; r < nrows; ++r) {
     const RotationData& R = rows[r].r;
-    circle_constants<ringed>(R, rows[r].r_u, 2.0 * (R.beta * R.gamma - R.alpha * R.delta), C[r]);
+    circle_constants<ringed>(R, rows[r].r_u, rotation_rate_factor(R), C[r]);
     shared = shared && same_f(R, rows[0].r);
   }
   Chunk c;
@@ -253,7 +254,7 @@ CYC_ALWAYS_INLINE void point(const CircleRow& row, double v, PointResult& P) {
   double s1, s0;
   circle_parameter(v, s1, s0);
   const RotationData& R = row.r;
-  const double k = 2.0 * (R.beta * R.gamma - R.alpha * R.delta);
+  const double k = rotation_rate_factor(R);
   CircleConstants C;
   circle_constants<NORMAL && !CANAL>(R, row.r_u, k, C);
   eval_point<DU, DV, NORMAL, CANAL>(R, row.r_u, k, row.inv_radius, C,
