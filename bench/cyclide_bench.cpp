@@ -866,7 +866,9 @@ void BM_ContinuityReport(benchmark::State& state) {
 // the same (deterministic), so the last summary gives the counters:
 // "iterations" (Ceres', all rounds), "cost_reduction" (initial / final
 // cost), "initial_cost" and "final_cost".
-void BM_OptimizeBlend(benchmark::State& state, int kind) {
+// points: the chosen points' circle parameters free too (circle_parameter_range
+// 1.5, seed 000 §9.1 (i)): 10 (ringed) or 8 (canal) unknowns at K = 2.
+void BM_OptimizeBlend(benchmark::State& state, int kind, bool points) {
   if (!cyc_optimizer_available()) {
     state.SkipWithError("no optimizer tier in this build (Ceres not found)");
     return;
@@ -880,11 +882,14 @@ void BM_OptimizeBlend(benchmark::State& state, int kind) {
   cyc_blend_end e{B, 1.0, {kBlendV[0], kBlendV[1], kBlendV[2]}, 0.0, {}};
   if (kind == CYC_BLEND_CANAL) s.v[1] = e.v[1] = 0.3;  // as BM_BlendCanal
   cyc_optimize_summary sum{};
+  cyc_optimize_options options;
+  cyc_optimize_options_init(&options);
+  if (points) options.circle_parameter_range = 1.5;
   int bad = (A && B) ? CYC_OK : CYC_E_INVALID_ARGUMENT;
   AllocCounter allocs(state);
   for (auto _ : state) {
     cyc_surface* X = nullptr;
-    const int st = cyc_optimize_blend(f.ctx, kind, &s, &e, K, 0.0, 1.0, nullptr, nullptr, &X,
+    const int st = cyc_optimize_blend(f.ctx, kind, &s, &e, K, 0.0, 1.0, nullptr, &options, &X,
                                       nullptr, nullptr, &sum);
     if (st != CYC_OK && bad == CYC_OK) bad = st;
     benchmark::DoNotOptimize(X);
@@ -1014,11 +1019,19 @@ BENCHMARK(BM_BlendCanal)->Arg(2)->Arg(3);
 BENCHMARK(BM_BlendRingedCapi)->Arg(2);
 BENCHMARK(BM_DerivativesU)->Arg(1)->Arg(2)->Arg(3);
 BENCHMARK(BM_ContinuityReport);
-BENCHMARK_CAPTURE(BM_OptimizeBlend, ringed, CYC_BLEND_RINGED)
+BENCHMARK_CAPTURE(BM_OptimizeBlend, ringed, CYC_BLEND_RINGED, false)
     ->Arg(1)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_OptimizeBlend, canal, CYC_BLEND_CANAL)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OptimizeBlend, canal, CYC_BLEND_CANAL, false)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OptimizeBlend, ringed_points, CYC_BLEND_RINGED, true)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_OptimizeBlend, canal_points, CYC_BLEND_CANAL, true)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ImplicitBlendApprox)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace

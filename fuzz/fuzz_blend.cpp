@@ -699,7 +699,7 @@ void fuzz_options(Input& in, OptCall& o) {
   if (o.null_opt) return;
   for (double* x : {&o.opt.lambda_min_ratio, &o.opt.lambda_max_ratio, &o.opt.higher_bound,
                     &o.opt.function_tolerance, &o.opt.gradient_tolerance,
-                    &o.opt.parameter_tolerance})
+                    &o.opt.parameter_tolerance, &o.opt.circle_parameter_range})
     param_real(in, *x, o.moderate);
   o.opt.free_orders = param_free_orders(in, o.K);
   o.opt.max_iterations = in.rarely() ? (in.flag() ? -1 : INT32_MIN) : in.range(0, 4);
@@ -772,7 +772,7 @@ unsigned objective_statuses(const cyc_blend_objective& b) {
 unsigned options_statuses(const cyc_optimize_options& p, int K) {
   unsigned m = 0;
   for (double x : {p.lambda_min_ratio, p.lambda_max_ratio, p.higher_bound, p.function_tolerance,
-                   p.gradient_tolerance, p.parameter_tolerance})
+                   p.gradient_tolerance, p.parameter_tolerance, p.circle_parameter_range})
     m |= number_status(x);
   if (!(p.lambda_min_ratio > 0 && p.lambda_min_ratio <= 1) || !(p.lambda_max_ratio >= 1))
     m |= bit(CYC_E_INVALID_ARGUMENT);
@@ -826,6 +826,9 @@ unsigned validation_mask(const OptCall& o) {
   return blend_statuses(o) | objective_statuses(o.obj) | options_statuses(o.opt, o.K);
 }
 
+// Whether the call frees the chosen points (circle_parameter_range > 0).
+bool points_free(const OptCall& o) { return !o.null_opt && o.opt.circle_parameter_range > 0; }
+
 // The work of a valid call's solve in units of one Jacobian evaluation on a
 // 1 x 1 quadrature with up to 4 parameters (~5 ms under ASan and coverage):
 // quadrature nodes x Jet passes x (iterations + 1), plus the start blends.
@@ -834,7 +837,8 @@ int solve_work(const OptCall& o) {
   const int nt = o.null_obj ? 8 : o.obj.quadrature_t, nz = o.null_obj ? 4 : o.obj.quadrature_v;
   const int it = o.null_opt ? 50 : o.opt.max_iterations;
   const int free = o.opt.free_orders > 0 ? o.opt.free_orders : std::min(o.K, 2);
-  const int passes = (2 * free + 3) / 4;  // Ceres' dynamic autodiff: 4 derivatives a pass
+  const int points = points_free(o) ? 2 * (o.kind == CYC_BLEND_CANAL ? 2 : 3) : 0;
+  const int passes = (2 * free + points + 3) / 4;  // 4 derivatives a pass (dynamic autodiff)
   return nt * nz * passes * (it + 1) + 2;
 }
 
@@ -942,14 +946,47 @@ void check_summary(const OptCall& o, const cyc_optimize_summary& m) {
              "!= weight / 2 = %.17g", m.fairness, 0.5 * w);
 }
 
-// A returned end: the input's surface and points, the jet within the
-// documented bounds around the start lambda (with its sign), the orders
-// above free_orders as given.
+// The angle theta = 2 atan v of a circle parameter, and the distance of
+// two angles on the circle of angles.
+double angle_of(double v) { return 2.0 * std::atan(v); }
+double angle_distance(double a, double b) {
+  const double two_pi = 4.0 * std::acos(0.0);
+  const double d = std::fmod(std::abs(a - b), two_pi);
+  return std::min(d, two_pi - d);
+}
+
+// The returned points: the input's unless freed; freed, each moved at most
+// circle_parameter_range in angle and at most 0.45 x the angle to its
+// end's nearest other point (so they stay distinct); unused slots kept.
+void check_points(const OptCall& o, int e, const cyc_blend_end& r) {
+  const cyc_blend_end& E = o.ends[e];
+  const int count = o.kind == CYC_BLEND_CANAL ? 2 : 3;
+  for (int j = 0; j < 3; ++j) {
+    const bool same = std::memcmp(&r.v[j], &E.v[j], sizeof r.v[j]) == 0;
+    if (!points_free(o) || j >= count) {
+      FZ_CHECK(same, "optimize_blend: end %d point %d moved (%a -> %a)", e, j, E.v[j], r.v[j]);
+      continue;
+    }
+    if (same) continue;
+    const double moved = angle_distance(angle_of(r.v[j]), angle_of(E.v[j]));
+    double gap = HUGE_VAL;
+    for (int k = 0; k < count; ++k)
+      if (k != j) gap = std::min(gap, angle_distance(angle_of(E.v[j]), angle_of(E.v[k])));
+    const double box = std::min(o.opt.circle_parameter_range, 0.45 * gap);
+    FZ_CHECK(!std::isnan(r.v[j]) && moved <= box * (1 + 1e-12) + 1e-12,
+             "optimize_blend: end %d point %d moved %g (box %g): %a -> %a", e, j, moved, box,
+             E.v[j], r.v[j]);
+  }
+}
+
+// A returned end: the input's surface, u and (unless freed) points, the
+// jet within the documented bounds around the start lambda (with its
+// sign), the orders above free_orders as given.
 void check_end(const OptCall& o, int e, const cyc_blend_end& r) {
   const cyc_blend_end& E = o.ends[e];
-  FZ_CHECK(r.surface == E.surface && std::memcmp(&r.u, &E.u, sizeof r.u) == 0 &&
-               std::memcmp(r.v, E.v, sizeof r.v) == 0,
-           "optimize_blend: end %d changed its surface, u or v", e);
+  FZ_CHECK(r.surface == E.surface && std::memcmp(&r.u, &E.u, sizeof r.u) == 0,
+           "optimize_blend: end %d changed its surface or u", e);
+  check_points(o, e, r);
   const double l0 = effective_lambda(E, e, o.es[e]->u0, o.es[e]->u1), a = std::abs(l0);
   const cyc_optimize_options& p = o.opt;
   const double lo = l0 > 0 ? p.lambda_min_ratio * a : -p.lambda_max_ratio * a;
@@ -1010,18 +1047,33 @@ void check_opt_joins(Ctx& c, const OptCall& o, const OptOut& r) {
 // OK whenever the optimizer is (the same validation and start search), 2
 // free orders per end, starts inside the boxes, and the chosen jets too.
 void check_parameters(Ctx& c, const OptCall& o, const OptOut& r) {
-  cyc_free_parameter P[2 * CYC_MAX_BLEND_ORDER];
+  constexpr int kCap = 2 * CYC_MAX_BLEND_ORDER + 6;
+  cyc_free_parameter P[kCap];
   int n = -1;
   const int st = cyc_optimize_blend_parameters(c.ctx, o.kind, &o.ends[0], &o.ends[1], o.K, o.t0,
-                                               o.t1, o.null_opt ? nullptr : &o.opt, P,
-                                               2 * CYC_MAX_BLEND_ORDER, &n);
+                                               o.t1, o.null_opt ? nullptr : &o.opt, P, kCap, &n);
   c.check("cyc_optimize_blend_parameters", st);
   FZ_CHECK(st == CYC_OK, "optimize_blend OK but its parameters give %s", cyc_status_name(st));
   if (st != CYC_OK) return;
   const int fo = o.null_opt ? 0 : o.opt.free_orders;
   const int free = fo > 0 ? fo : std::min(o.K, 2);
-  FZ_CHECK(n == 2 * free, "blend parameters: count %d for %d free orders", n, free);
-  for (int i = 0; i < n && i < 2 * CYC_MAX_BLEND_ORDER; ++i) {
+  const int count = o.kind == CYC_BLEND_CANAL ? 2 : 3, points = points_free(o) ? 2 * count : 0;
+  FZ_CHECK(n == 2 * free + points, "blend parameters: count %d for %d free orders, %d points",
+           n, free, points);
+  for (int i = 2 * free; i < n && i < kCap; ++i) {
+    const int e = (i - 2 * free) / count, j = (i - 2 * free) % count;
+    const double v = r.ends[e].v[j];
+    const double theta = std::memcmp(&v, &o.ends[e].v[j], sizeof v) == 0 ? P[i].start
+                                                                          : angle_of(v);
+    // The chosen angle lies in the box up to the period (atan folds it).
+    const double off = angle_distance(theta, P[i].start);
+    FZ_CHECK(P[i].role == CYC_PARAMETER_CIRCLE_POINT && P[i].index == e && P[i].order == j &&
+                 P[i].lower <= P[i].start && P[i].start <= P[i].upper &&
+                 off <= (P[i].upper - P[i].start) * (1 + 1e-12) + 1e-12,
+             "blend point parameter %d (end %d, point %d): chosen %g, start %g, box [%g, %g]", i,
+             e, j, theta, P[i].start, P[i].lower, P[i].upper);
+  }
+  for (int i = 0; i < 2 * free && i < kCap; ++i) {
     const int e = i / free, m = i % free;
     const double v = m == 0 ? r.ends[e].lambda : r.ends[e].phi[m - 1];
     FZ_CHECK(P[i].role == CYC_PARAMETER_JET && P[i].index == e && P[i].order == m + 1 &&

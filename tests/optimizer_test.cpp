@@ -127,6 +127,19 @@ struct Fig6 {
   }
 };
 
+// The optimized ends rebuild the returned blend X bit for bit through
+// cyc_blend_ringed (K = 2 on [0, 1]).
+void expect_rebuilds(cyc_context* ctx, const cyc_surface* X, const cyc_blend_end& so,
+                     const cyc_blend_end& eo) {
+  cyc_surface* Y = nullptr;
+  ASSERT_EQ(cyc_blend_ringed(ctx, &so, &eo, 2, 0.0, 1.0, &Y), CYC_OK);
+  double x[3], y[3];
+  EXPECT_EQ(cyc_surface_eval(ctx, X, 0.4, 0.3, x, nullptr, nullptr, nullptr), CYC_OK);
+  EXPECT_EQ(cyc_surface_eval(ctx, Y, 0.4, 0.3, y, nullptr, nullptr, nullptr), CYC_OK);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(x[k], y[k]);
+  cyc_surface_destroy(ctx, Y);
+}
+
 }  // namespace
 
 TEST(Optimizer, BlendDefaultsAndSummary) {
@@ -162,12 +175,7 @@ TEST(Optimizer, BlendDefaultsAndSummary) {
   EXPECT_GT(so.lambda, 0.0);
   EXPECT_LT(eo.lambda, 0.0);
   // The optimized ends rebuild the same blend through cyc_blend_ringed.
-  cyc_surface* Y = nullptr;
-  ASSERT_EQ(cyc_blend_ringed(f.ctx, &so, &eo, 2, 0.0, 1.0, &Y), CYC_OK);
-  double x[3], y[3];
-  ASSERT_EQ(cyc_surface_eval(f.ctx, X, 0.4, 0.3, x, nullptr, nullptr, nullptr), CYC_OK);
-  ASSERT_EQ(cyc_surface_eval(f.ctx, Y, 0.4, 0.3, y, nullptr, nullptr, nullptr), CYC_OK);
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(x[k], y[k]);
+  expect_rebuilds(f.ctx, X, so, eo);
   // The join still holds (continuity report with the new tangent length;
   // free_orders = min(K, 2) = 2 also moved phi'', so compare order 0 only).
   cyc_continuity R;
@@ -175,7 +183,58 @@ TEST(Optimizer, BlendDefaultsAndSummary) {
   EXPECT_LE(R.max_gap, 1e-10 * R.point_scale);
   EXPECT_LE(R.max_normal_angle, 1e-8);
   cyc_surface_destroy(f.ctx, X);
-  cyc_surface_destroy(f.ctx, Y);
+}
+
+// Seed 000 §9.1 (i) through the C ABI: circle_parameter_range frees the
+// chosen points; the query lists 3 CYC_PARAMETER_CIRCLE_POINT angles per end
+// after the jets, the chosen ends carry the moved v[] (v = tan(theta / 2))
+// and rebuild the returned blend through cyc_blend_ringed; the default
+// keeps them; a negative range is CYC_E_INVALID_ARGUMENT.
+TEST(Optimizer, FreeCirclePointsThroughTheCApi) {
+  Fig6 f;
+  cyc_optimize_options p;
+  cyc_optimize_options_init(&p);
+  EXPECT_EQ(p.circle_parameter_range, 0.0);
+  p.circle_parameter_range = 1.0;
+  cyc_free_parameter P[10];
+  int n = -1;
+  ASSERT_EQ(cyc_optimize_blend_parameters(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0, &p,
+                                          P, 10, &n),
+            CYC_OK);
+  ASSERT_EQ(n, 10);
+  for (int i = 4; i < 10; ++i) {
+    EXPECT_EQ(P[i].role, CYC_PARAMETER_CIRCLE_POINT);
+    EXPECT_EQ(P[i].index, (i - 4) / 3);
+    EXPECT_EQ(P[i].order, (i - 4) % 3);
+    EXPECT_NEAR(P[i].start, 2 * std::atan(f.s.v[(i - 4) % 3]), 1e-15);
+  }
+  cyc_surface* X = nullptr;
+  cyc_blend_end so, eo;
+  cyc_optimize_summary sum, kept;
+  ASSERT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0, nullptr, &p, &X,
+                               &so, &eo, &sum),
+            CYC_OK)
+      << cyc_context_last_error(f.ctx);
+  cyc_surface* X0 = nullptr;
+  ASSERT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0, nullptr,
+                               nullptr, &X0, nullptr, nullptr, &kept),
+            CYC_OK);
+  EXPECT_LT(sum.final_cost, kept.final_cost);
+  int moved = 0;
+  for (int j = 0; j < 3; ++j) {
+    moved += so.v[j] != f.s.v[j];
+    moved += eo.v[j] != f.e.v[j];
+    EXPECT_LE(std::abs(std::remainder(2 * std::atan(eo.v[j]) - P[7 + j].start, 4 * std::acos(0.0))),
+              P[7 + j].upper - P[7 + j].start + 1e-12);
+  }
+  EXPECT_GT(moved, 0);
+  expect_rebuilds(f.ctx, X, so, eo);
+  p.circle_parameter_range = -1.0;
+  EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 2, 0.0, 1.0, nullptr, &p,
+                               &X0, nullptr, nullptr, nullptr),
+            CYC_E_INVALID_ARGUMENT);
+  cyc_surface_destroy(f.ctx, X);
+  cyc_surface_destroy(f.ctx, X0);
 }
 
 // Issue 4's common description through the C ABI: the size query, the

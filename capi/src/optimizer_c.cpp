@@ -88,6 +88,7 @@ optim::BlendOptions blend_options_of(const cyc_optimize_options* options) {
   P.lambda_min_ratio = p.lambda_min_ratio;
   P.lambda_max_ratio = p.lambda_max_ratio;
   P.higher_bound = p.higher_bound;
+  P.circle_parameter_range = p.circle_parameter_range;
   P.max_iterations = p.max_iterations;
   P.function_tolerance = p.function_tolerance;
   P.gradient_tolerance = p.gradient_tolerance;
@@ -204,6 +205,7 @@ int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
       cyc_blend_end r = in;
       r.lambda = b.lambda;
       for (int m = 0; m < kMaxBlendOrder - 1; ++m) r.phi[m] = b.phi[m];
+      for (int j = 0; j < 3; ++j) r.v[j] = b.v[j];
       *dst = r;
     };
     if (start_out) put_end(*start, so, start_out);

@@ -21,6 +21,43 @@ constexpr int kMaxBlendOrder = kMaxHermiteOrder;  // 7
 // On error nothing is written.
 Status derivatives_u(const Surface& S, double u, double v, int K, Vec3d* out);
 
+// A series of doubles as a series of T (e.g. a Ceres Jet: constants).
+template <class T, int N>
+Taylor<T, N> lift(const Taylor<double, N>& a) {
+  Taylor<T, N> r;
+  for (int k = 0; k <= N; ++k) r.c[k] = T(a.c[k]);
+  return r;
+}
+
+// x(u, v) as a u-series of order N, from the circle frame F at u (series
+// of order N) and the circle parameter v = s1 / s0 given homogeneously
+// (eqs. (11)/(27) expanded as in evaluator.hpp, on series):
+//   W = alpha s1 + beta s0,  G = gamma s1 + delta s0,  d = p - o,
+//   x = o + ((W^2 - G^2 |a|^2) d + 2 G^2 (a.d) a + 2 W G a x d)
+//           / (W^2 + G^2 |a|^2).
+// Generic in the scalar T of (s1, s0): derivatives_u uses doubles, the
+// blend optimizer Jets when the chosen points move along their circles.
+// False (x untouched) where W^2 + G^2 |a|^2 vanishes.
+template <class T, int N>
+bool point_series(const CircleFrame<Taylor<double, N>>& F, const T& s1, const T& s0,
+                  Vec3<Taylor<T, N>>& x) {
+  using D = Taylor<double, N>;
+  using S = Taylor<T, N>;
+  const Vec3<D> d = F.p - F.o;
+  const D aa = F.a.dot(F.a), ad = F.a.dot(d);
+  const Vec3<D> axd = F.a.cross(d);
+  const S W = lift<T>(F.alpha) * S(s1) + lift<T>(F.beta) * S(s0);
+  const S G = lift<T>(F.gamma) * S(s1) + lift<T>(F.delta) * S(s0);
+  const S W2 = W * W, G2 = G * G, two(2.0), aaT = lift<T>(aa);
+  const S den = W2 + G2 * aaT;
+  if (!(value_of(den.c[0]) > 0)) return false;
+  const S cd = W2 - G2 * aaT, ca = two * G2 * lift<T>(ad), cx = two * W * G;
+  for (int j = 0; j < 3; ++j)
+    x[j] = lift<T>(F.o[j]) +
+           (cd * lift<T>(d[j]) + ca * lift<T>(F.a[j]) + cx * lift<T>(axd[j])) / den;
+  return true;
+}
+
 // One end of a blend: the end circle u of `surface`, the circle parameters
 // of the chosen points P_j = x(u, v[j]) (2 for canal, 3 for ringed blends),
 // and the chain-rule factor lambda = du/dt of the input per unit of the
@@ -66,11 +103,13 @@ Taylor<S, N> reparameterization_series(const S* jet, int K) {
 
 // The series are truncated at order N (K <= N; the result is the same for
 // every N >= K): the optimizer calls it with N = K.
-template <int N, class S>
-void reparameterize_to(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
+// The derivatives dx may be doubles or of the jet's scalar (the optimizer's
+// moving points).
+template <int N, class D, class S>
+void reparameterize_to(int K, const Vec3<D>* dx, const S* jet, Vec3<S>* out) {
   const Taylor<S, N> h = reparameterization_series<N>(jet, K);
   for (int j = 0; j < 3; ++j) {
-    Taylor<double, N> f;
+    Taylor<D, N> f;
     double fact = 1.0;
     for (int k = 0; k <= K; ++k) {
       if (k > 0) fact *= k;
@@ -85,8 +124,8 @@ void reparameterize_to(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
   }
 }
 
-template <class S>
-void reparameterize(int K, const Vec3d* dx, const S* jet, Vec3<S>* out) {
+template <class D, class S>
+void reparameterize(int K, const Vec3<D>* dx, const S* jet, Vec3<S>* out) {
   reparameterize_to<kMaxBlendOrder>(K, dx, jet, out);
 }
 

@@ -33,8 +33,12 @@ using Basis = Taylor<double, kOrder>;
 struct Problem {
   BlendKind kind = BlendKind::canal;
   int K = 0, count = 0, free = 0;
+  bool free_points = false;  // the chosen points' circle parameters are unknowns
   double t0 = 0, t1 = 1;
-  Vec3d D[2][3][kMaxBlendOrder + 1];  // d^k x/du^k at the chosen points
+  Vec3d D[2][3][kMaxBlendOrder + 1];  // d^k x/du^k at the chosen points (fixed)
+  // The end circles' frames as u-series of order K (coefficients above K
+  // zero), for the moving points (free_points).
+  CircleFrame<Taylor<double, kMaxBlendOrder>> frame[2];
   double jet0[2][kMaxBlendOrder] = {};  // the jets of orders above `free`
   int nt = 0, nz = 0;
   double tw[kMaxQuadrature] = {}, zn[kMaxQuadrature] = {}, zw[kMaxQuadrature] = {};
@@ -47,6 +51,10 @@ struct Problem {
   double fair_norm = 1;   // 1 / sqrt(the start's fairness integral)
 
   int slots() const { return 2 * (K + 1); }
+  // The unknowns: the jets' free orders of both ends, then (free_points)
+  // the angles theta = 2 atan v of the chosen points, end by end.
+  int jet_index(int e, int m) const { return e * free + m; }
+  int point_index(int e, int j) const { return 2 * free + e * count + j; }
   const Basis* basis(int node) const { return &B[size_t(node) * slots()]; }
   int per_node() const { return 1 + int(obstacles.size()) + 2 * nz * (9 + 1); }
   int residuals() const { return nt * per_node() + 2 * int(targets.size()); }
@@ -212,13 +220,54 @@ void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T&
 }
 
 // reparameterize with the series truncated at order K (not kMaxBlendOrder).
-template <class T>
-void reparameterize_k(int K, const Vec3d* dx, const T* jet, Vec3<T>* out) {
+template <class D, class T>
+void reparameterize_k(int K, const Vec3<D>* dx, const T* jet, Vec3<T>* out) {
   switch (K) {
     case 1: return reparameterize_to<1>(K, dx, jet, out);
     case 2: return reparameterize_to<2>(K, dx, jet, out);
     case 3: return reparameterize_to<3>(K, dx, jet, out);
     default: return reparameterize_to<kMaxBlendOrder>(K, dx, jet, out);
+  }
+}
+
+// The frame's series truncated to order N.
+template <int N>
+CircleFrame<Taylor<double, N>> truncate_frame(const CircleFrame<Taylor<double, kMaxBlendOrder>>& F) {
+  CircleFrame<Taylor<double, N>> R;
+  R.o = truncate<N>(F.o);
+  R.a = truncate<N>(F.a);
+  R.p = truncate<N>(F.p);
+  R.alpha = truncate<N>(F.alpha);
+  R.beta = truncate<N>(F.beta);
+  R.gamma = truncate<N>(F.gamma);
+  R.delta = truncate<N>(F.delta);
+  return R;
+}
+
+template <int N, class T>
+bool moving_point_order(const CircleFrame<Taylor<double, kMaxBlendOrder>>& F, const T& s1,
+                        const T& s0, Vec3<T>* dx) {
+  Vec3<Taylor<T, N>> x;
+  if (!point_series(truncate_frame<N>(F), s1, s0, x)) return false;
+  for (int l = 0; l <= N; ++l)
+    for (int c = 0; c < 3; ++c) dx[l][c] = x[c].derivative(l);
+  return true;
+}
+
+// d^l x/du^l (u, v), l = 0..K, of a chosen point moving on its end circle:
+// v = tan(theta / 2) as the homogeneous (sin(theta/2), cos(theta/2)), smooth
+// through v = infinity (theta = pi), with theta a Jet.
+template <class T>
+bool moving_point_derivatives(const CircleFrame<Taylor<double, kMaxBlendOrder>>& F, int K,
+                              const T& theta, Vec3<T>* dx) {
+  using std::cos;
+  using std::sin;
+  const T s1 = sin(0.5 * theta), s0 = cos(0.5 * theta);
+  switch (K) {
+    case 1: return moving_point_order<1>(F, s1, s0, dx);
+    case 2: return moving_point_order<2>(F, s1, s0, dx);
+    case 3: return moving_point_order<3>(F, s1, s0, dx);
+    default: return moving_point_order<kMaxBlendOrder>(F, s1, s0, dx);
   }
 }
 
@@ -236,10 +285,20 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
       P.kind == BlendKind::canal ? Status::dependent_planes : Status::collinear_points;
   T jet[2][kMaxBlendOrder];
   for (int e = 0; e < 2; ++e)
-    for (int m = 0; m < P.K; ++m) jet[e][m] = m < P.free ? params[e * P.free + m] : T(P.jet0[e][m]);
+    for (int m = 0; m < P.K; ++m)
+      jet[e][m] = m < P.free ? params[P.jet_index(e, m)] : T(P.jet0[e][m]);
   Vec3<T> d[2][3][kMaxBlendOrder + 1];
   for (int e = 0; e < 2; ++e)
-    for (int j = 0; j < P.count; ++j) reparameterize_k(P.K, P.D[e][j], jet[e], d[e][j]);
+    for (int j = 0; j < P.count; ++j) {
+      if (!P.free_points) {
+        reparameterize_k(P.K, P.D[e][j], jet[e], d[e][j]);
+        continue;
+      }
+      Vec3<T> dx[kMaxBlendOrder + 1];
+      if (!moving_point_derivatives(P.frame[e], P.K, params[P.point_index(e, j)], dx))
+        return fail(Status::degenerate_circle_parameter);
+      reparameterize_k(P.K, dx, jet[e], d[e][j]);
+    }
   const BlendObjective& O = P.obj;
   const T w_reg(std::sqrt(O.regularity)), w_obs(std::sqrt(O.obstacle_weight)),
       w_tgt(std::sqrt(O.target_weight));
@@ -311,11 +370,11 @@ bool evaluate(const Problem& P, const T* params, T* r, Terms* terms, Status* why
 // A parameter whose box has zero or non-finite width is fixed at its start.
 struct Box {
   int n = 0;
-  double lo[2 * kMaxBlendOrder] = {}, hi[2 * kMaxBlendOrder] = {};
-  double mid[2 * kMaxBlendOrder] = {}, half[2 * kMaxBlendOrder] = {};
-  double x0[2 * kMaxBlendOrder] = {};
-  bool fixed[2 * kMaxBlendOrder] = {};
-  int pin[2 * kMaxBlendOrder] = {};  // -1 / +1: held at lo / hi (active set)
+  double lo[kMaxFreeParameters] = {}, hi[kMaxFreeParameters] = {};
+  double mid[kMaxFreeParameters] = {}, half[kMaxFreeParameters] = {};
+  double x0[kMaxFreeParameters] = {};
+  bool fixed[kMaxFreeParameters] = {};
+  int pin[kMaxFreeParameters] = {};  // -1 / +1: held at lo / hi (active set)
 
   Box(const std::vector<double>& l, const std::vector<double>& h, const std::vector<double>& x) {
     n = int(x.size());
@@ -359,7 +418,7 @@ struct Residuals {
   bool identity = false;  // the parameters are x itself (the gradient in x)
   template <class T>
   bool operator()(const T* s, T* r) const {
-    T x[2 * kMaxBlendOrder];
+    T x[kMaxFreeParameters];
     for (int i = 0; i < box->n; ++i) x[i] = identity ? s[i] : box->to_x(i, s[i]);
     return evaluate(*P, x, r, nullptr);
   }
@@ -370,8 +429,9 @@ struct Residuals {
 };
 
 // The cost function for n = 2 free parameters (free_orders 1, the default
-// for K = 1), 4 (free_orders 2, the default for K >= 2) or 6: Jet<double,
-// n>; others: dynamic Jets of stride 4.
+// for K = 1), 4 (free_orders 2, the default for K >= 2), 6, 8 or 10 (the
+// defaults with the canal / ringed points free): Jet<double, n>; others:
+// dynamic Jets of stride 4.
 ceres::CostFunction* make_cost(const Problem& P, const Box& box, bool identity = false) {
   using ceres::AutoDiffCostFunction;
   using ceres::DYNAMIC;
@@ -380,6 +440,8 @@ ceres::CostFunction* make_cost(const Problem& P, const Box& box, bool identity =
     case 2: return new AutoDiffCostFunction<Residuals, DYNAMIC, 2>(f, P.residuals());
     case 4: return new AutoDiffCostFunction<Residuals, DYNAMIC, 4>(f, P.residuals());
     case 6: return new AutoDiffCostFunction<Residuals, DYNAMIC, 6>(f, P.residuals());
+    case 8: return new AutoDiffCostFunction<Residuals, DYNAMIC, 8>(f, P.residuals());
+    case 10: return new AutoDiffCostFunction<Residuals, DYNAMIC, 10>(f, P.residuals());
     default: {
       auto* cost = new ceres::DynamicAutoDiffCostFunction<Residuals, 4>(f);
       cost->AddParameterBlock(box.n);
@@ -448,9 +510,9 @@ Solved solve_box(const Problem& P, Box& box, const BlendOptions& options, std::v
   const int n = box.n;
   const double half_pi = std::acos(-1.0) / 2;
   std::vector<double> s(x.size()), best_s(x.size()), g;
-  int examined[2 * kMaxBlendOrder] = {};  // the bounds a parameter was examined at
-  bool released[2 * kMaxBlendOrder] = {};
-  int best_pin[2 * kMaxBlendOrder] = {};
+  int examined[kMaxFreeParameters] = {};  // the bounds a parameter was examined at
+  bool released[kMaxFreeParameters] = {};
+  int best_pin[kMaxFreeParameters] = {};
   for (int i = 0; i < n; ++i) s[size_t(i)] = box.to_s(i, x[size_t(i)]);
   const std::unique_ptr<ceres::CostFunction> fx(make_cost(P, box, true));
   // The active set at x = x(s): 1 changed, 0 unchanged, -1 no gradient.
@@ -580,7 +642,7 @@ Status check_inputs(BlendKind kind, int K, const BlendObjective& O, const BlendO
   const double nums[] = {O.fairness, O.regularity, O.min_determinant, O.min_speed,
                          O.target_weight, O.clearance, O.obstacle_weight,
                          B.lambda_min_ratio, B.lambda_max_ratio, B.higher_bound,
-                         B.function_tolerance, B.gradient_tolerance, B.parameter_tolerance};
+                         B.circle_parameter_range, B.function_tolerance, B.gradient_tolerance, B.parameter_tolerance};
   for (double x : nums)
     if (!std::isfinite(x)) return Status::not_finite;
   for (double x : nums)
@@ -607,13 +669,17 @@ Status check_inputs(BlendKind kind, int K, const BlendObjective& O, const BlendO
   return Status::ok;
 }
 
-// The blend for the jets (lambda, phi[]) of both ends.
+// The blend for the jets (lambda, phi[]) of both ends and (v non-null)
+// the chosen points' circle parameters v[end][j].
 Status build(BlendKind kind, BlendEnd s, BlendEnd e, const double (&jet)[2][kMaxBlendOrder],
-             int K, double t0, double t1, Surface& out, double* bad, BlendEnd* so, BlendEnd* eo) {
+             int K, double t0, double t1, Surface& out, double* bad, BlendEnd* so, BlendEnd* eo,
+             const double (*v)[3] = nullptr) {
   BlendEnd* ends[2] = {&s, &e};
   for (int i = 0; i < 2; ++i) {
     ends[i]->lambda = jet[i][0];
     for (int m = 2; m <= K; ++m) ends[i]->phi[m - 2] = jet[i][m - 1];
+    if (v)
+      for (int j = 0; j < 3; ++j) ends[i]->v[j] = v[i][j];
   }
   const Status st = kind == BlendKind::canal ? make_canal_blend(s, e, K, t0, t1, out, bad)
                                              : make_ringed_blend(s, e, K, t0, t1, out, bad);
@@ -684,13 +750,57 @@ Status start_jets(BlendKind kind, const BlendEnd& start, const BlendEnd& end, in
   return first;
 }
 
+// The angle theta = 2 atan v in [-pi, pi] of a circle parameter (v =
+// +-infinity, the generator: +-pi).
+double angle_of(double v) { return 2.0 * std::atan(v); }
+
+// The circle parameter of the angle theta, exactly the start's v where
+// theta did not move (so a generator point v = infinity stays one).
+double parameter_of_angle(double theta, double theta0, double v0) {
+  return theta == theta0 ? v0 : std::tan(0.5 * theta);
+}
+
+// The angular distance of theta and phi on the circle of angles (period
+// 2 pi), in [0, pi].
+double angle_distance(double theta, double phi) {
+  const double two_pi = 2.0 * std::acos(-1.0);
+  const double d = std::fmod(std::abs(theta - phi), two_pi);
+  return std::min(d, two_pi - d);
+}
+
+// The boxes of the chosen points' angles (SPEC §8e): theta_0 +- h with h =
+// min(circle_parameter_range, 0.45 x the angular distance to the end's
+// nearest other point), so the points stay distinct and keep their order
+// on the circle (v -> x is a bijection of the projective line onto the
+// circle where the surface is regular).
+void point_parameters(const BlendEnd* const (&ends)[2], int count, double range,
+                      FreeParameters& out) {
+  for (int e = 0; e < 2; ++e)
+    for (int j = 0; j < count; ++j) {
+      const double theta = angle_of(ends[e]->v[j]);
+      double h = range;
+      for (int k = 0; k < count; ++k)
+        if (k != j) h = std::min(h, 0.45 * angle_distance(theta, angle_of(ends[e]->v[k])));
+      FreeParameter q;
+      q.role = ParameterRole::circle_point;
+      q.index = e;
+      q.order = j;
+      q.lower = theta - h;
+      q.upper = theta + h;
+      q.start = q.value = theta;
+      out.add(q);
+    }
+}
+
 // The boxes of the jets (SPEC §8e): |phi'| in [min, max] |lambda_0| with
 // lambda_0's sign, |phi^(m)| <= higher_bound |lambda_0|; starts clamped in.
 // lambda = 0 means the default +-1: the bounds keep it out (min_ratio
-// |lambda_0| underflows to 0 for a denormal lambda_0).
-void jet_parameters(const double (&jet0)[2][kMaxBlendOrder],
-                    const double (&jet)[2][kMaxBlendOrder], int free, const BlendOptions& options,
-                    FreeParameters& out) {
+// |lambda_0| underflows to 0 for a denormal lambda_0). Then the points'
+// angles if circle_parameter_range > 0.
+void blend_parameters(const double (&jet0)[2][kMaxBlendOrder],
+                      const double (&jet)[2][kMaxBlendOrder], int free,
+                      const BlendEnd* const (&ends)[2], int count, const BlendOptions& options,
+                      FreeParameters& out) {
   constexpr double tiny = std::numeric_limits<double>::denorm_min();
   out = FreeParameters();
   for (int e = 0; e < 2; ++e) {
@@ -711,6 +821,64 @@ void jet_parameters(const double (&jet0)[2][kMaxBlendOrder],
       }
       q.start = q.value = std::min(std::max(jet[e][m], q.lower), q.upper);
       out.add(q);
+    }
+  }
+  if (options.circle_parameter_range > 0)
+    point_parameters(ends, count, options.circle_parameter_range, out);
+}
+
+// The frame of an end circle as u-series of order K, stored at order
+// kMaxBlendOrder (the coefficients above K zero).
+template <int N>
+Status end_frame_order(const Surface& S, double u,
+                       CircleFrame<Taylor<double, kMaxBlendOrder>>& out) {
+  CircleFrame<Taylor<double, N>> F;
+  if (Status st = S.frame<N>(u, F); st != Status::ok) return st;
+  auto widen = [](const Taylor<double, N>& a) {
+    Taylor<double, kMaxBlendOrder> r;
+    for (int k = 0; k <= N; ++k) r.c[k] = a.c[k];
+    return r;
+  };
+  for (int j = 0; j < 3; ++j) {
+    out.o[j] = widen(F.o[j]);
+    out.a[j] = widen(F.a[j]);
+    out.p[j] = widen(F.p[j]);
+  }
+  out.alpha = widen(F.alpha);
+  out.beta = widen(F.beta);
+  out.gamma = widen(F.gamma);
+  out.delta = widen(F.delta);
+  return Status::ok;
+}
+
+Status end_frame(const Surface& S, double u, int K,
+                 CircleFrame<Taylor<double, kMaxBlendOrder>>& out) {
+  switch (K) {
+    case 1: return end_frame_order<1>(S, u, out);
+    case 2: return end_frame_order<2>(S, u, out);
+    case 3: return end_frame_order<3>(S, u, out);
+    case 4: return end_frame_order<4>(S, u, out);
+    case 5: return end_frame_order<5>(S, u, out);
+    case 6: return end_frame_order<6>(S, u, out);
+    default: return end_frame_order<kMaxBlendOrder>(S, u, out);
+  }
+}
+
+// The ends' jets and circle parameters for the unknowns x: the jets' free
+// orders from x, the rest from jet; the points' v from their angles (the
+// start's v where an angle did not move).
+void unknowns_to_ends(const Problem& P, const double (&jet)[2][kMaxBlendOrder],
+                      const BlendEnd* const (&ends)[2], const FreeParameters& params,
+                      const std::vector<double>& x, double (&jets)[2][kMaxBlendOrder],
+                      double (&v)[2][3]) {
+  std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &jets[0][0]);
+  for (int e = 0; e < 2; ++e) {
+    for (int m = 0; m < P.free; ++m) jets[e][m] = x[size_t(P.jet_index(e, m))];
+    for (int j = 0; j < 3; ++j) v[e][j] = ends[e]->v[j];
+    if (!P.free_points) continue;
+    for (int j = 0; j < P.count; ++j) {
+      const int i = P.point_index(e, j);
+      v[e][j] = parameter_of_angle(x[size_t(i)], params.p[i].start, ends[e]->v[j]);
     }
   }
 }
@@ -744,12 +912,17 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   P.t0 = t0;
   P.t1 = t1;
   std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &P.jet0[0][0]);
-  const BlendEnd* ends[2] = {&start, &end};
-  for (int e = 0; e < 2; ++e)
+  P.free_points = options.circle_parameter_range > 0;
+  const BlendEnd* const ends[2] = {&start, &end};
+  for (int e = 0; e < 2; ++e) {
     for (int j = 0; j < P.count; ++j)
       if (Status st = derivatives_u(*ends[e]->surface, ends[e]->u, ends[e]->v[j], K, P.D[e][j]);
           st != Status::ok)
         return st;
+    if (P.free_points)
+      if (Status st = end_frame(*ends[e]->surface, ends[e]->u, K, P.frame[e]); st != Status::ok)
+        return st;
+  }
   P.obj = objective;
   P.targets.assign(objective.targets, objective.targets + objective.target_count);
   P.obstacles.assign(objective.obstacles, objective.obstacles + objective.obstacle_count);
@@ -786,7 +959,7 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   // normalizer: the start blend's fairness integral F0, so that the
   // fairness term is weight * F / F0 / 2 (1/2 the weight at the start).
   FreeParameters params;
-  jet_parameters(jet0, jet, P.free, options, params);
+  blend_parameters(jet0, jet, P.free, ends, P.count, options, params);
   std::vector<double> x(size_t(params.count)), lo(x.size()), hi(x.size());
   for (int i = 0; i < params.count; ++i) {
     lo[size_t(i)] = params.p[i].lower;
@@ -823,18 +996,14 @@ Status optimize_blend(BlendKind kind, const BlendEnd& start, const BlendEnd& end
   Surface S1;
   BlendEnd s1, e1;
   if (use) {
-    double jet1[2][kMaxBlendOrder];
-    std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &jet1[0][0]);
-    for (int e = 0; e < 2; ++e)
-      for (int m = 0; m < P.free; ++m) jet1[e][m] = x[size_t(e * P.free + m)];
-    use = build(kind, start, end, jet1, K, t0, t1, S1, nullptr, &s1, &e1) == Status::ok;
+    double jet1[2][kMaxBlendOrder], v1[2][3];
+    unknowns_to_ends(P, jet, ends, params, x, jet1, v1);
+    use = build(kind, start, end, jet1, K, t0, t1, S1, nullptr, &s1, &e1, v1) == Status::ok;
   }
   if (!use) {
-    double jets[2][kMaxBlendOrder];
-    std::copy(&jet[0][0], &jet[0][0] + 2 * kMaxBlendOrder, &jets[0][0]);
-    for (int e = 0; e < 2; ++e)
-      for (int m = 0; m < P.free; ++m) jets[e][m] = x_start[size_t(e * P.free + m)];
-    if (Status st = build(kind, start, end, jets, K, t0, t1, S1, bad_t, &s1, &e1);
+    double jets[2][kMaxBlendOrder], v[2][3];
+    unknowns_to_ends(P, jet, ends, params, x_start, jets, v);
+    if (Status st = build(kind, start, end, jets, K, t0, t1, S1, bad_t, &s1, &e1, v);
         st != Status::ok)
       return st;
     cost1 = cost0;
@@ -867,7 +1036,9 @@ Status describe_blend_parameters(BlendKind kind, const BlendEnd& start, const Bl
   if (Status st = start_jets(kind, start, end, K, t0, t1, options, jet0, jet, S0, bad_t);
       st != Status::ok)
     return st;
-  jet_parameters(jet0, jet, free_orders(K, options), options, out);
+  const BlendEnd* const ends[2] = {&start, &end};
+  blend_parameters(jet0, jet, free_orders(K, options), ends, kind == BlendKind::canal ? 2 : 3,
+                   options, out);
   return Status::ok;
 }
 

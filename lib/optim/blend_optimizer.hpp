@@ -1,6 +1,8 @@
 // The optimizer of a blend's free parameters (issue 4 item 6; SPEC.md §8e):
 // the jets (phi', phi'', ...) of both ends of a canal or ringed blend
-// (seed 000 §9; blend.hpp BlendEnd) chosen by Ceres' Levenberg-Marquardt
+// (seed 000 §9; blend.hpp BlendEnd), and optionally the circle parameters
+// of the chosen end points (§9.1 (i): where on the end circles the Hermite
+// curves start), chosen by Ceres' Levenberg-Marquardt
 // (autodiff Jacobians; the box bounds enforced exactly by the smooth map
 // x = mid + half sin(s) of unconstrained variables, with an active set that
 // pins parameters on their bounds) against a weighted sum of
@@ -66,6 +68,12 @@ struct BlendOptions {
   double lambda_min_ratio = 0.25;
   double lambda_max_ratio = 4.0;
   double higher_bound = 4.0;
+  // > 0: the circle parameters v[j] of the chosen end points (§9.1 (i))
+  // are unknowns too, as the angles theta = 2 atan v (radians; v = infinity
+  // is theta = pi), each within theta_0 +- min(circle_parameter_range,
+  // 0.45 x the angle to its end's nearest other point) so the points stay
+  // distinct and in order. 0 (the default): the points are kept.
+  double circle_parameter_range = 0.0;
   int max_iterations = 50;
   double function_tolerance = 1e-8;
   double gradient_tolerance = 1e-10;
@@ -75,8 +83,9 @@ struct BlendOptions {
 // The common description of a blend's free parameters (issue 4): every
 // optimizer of the library states its unknowns as FreeParameters — what
 // each one is, its box and its start — and reports the chosen values.
-// The families so far: the ends' jets phi', phi'', ... of the canal and
-// ringed blends (seed 000 §9, below) and the directrix bump w, tau of the
+// The families so far: the ends' jets phi', phi'', ... and the chosen
+// points' circle parameters of the canal and ringed blends (seed 000 §9,
+// below) and the directrix bump w, tau of the
 // P-curve blend (seed 001 §5, bump_optimizer.hpp). (The reparameterization
 // factors mu and the family parameters alpha of the brief are not free
 // parameters of any blend built here: mu is fixed by the Hermite data's
@@ -86,6 +95,7 @@ enum class ParameterRole : int {
   jet = 0,                // phi^(order) at end `index` (0 start, 1 end); order 1 = lambda
   bump_displacement = 1,  // w_index (index 0, 1, 2) of d* = d + w b(t; tau)
   bump_position = 2,      // tau
+  circle_point = 3,       // theta = 2 atan v of point `order` (j) at end `index`
 };
 struct FreeParameter {
   ParameterRole role = ParameterRole::jet;
@@ -95,7 +105,7 @@ struct FreeParameter {
   double start = 0.0;               // the start value (inside the box)
   double value = 0.0;               // the chosen value (the start before solving)
 };
-constexpr int kMaxFreeParameters = 2 * kMaxBlendOrder;
+constexpr int kMaxFreeParameters = 2 * kMaxBlendOrder + 6;  // jets, then 3 points per end
 struct FreeParameters {
   FreeParameter p[kMaxFreeParameters];
   int count = 0;
@@ -122,8 +132,9 @@ struct BlendSummary {
 };
 
 // Optimizes the jets of start and end (their lambda and phi[] are the start
-// values; lambda = 0 means blend_lambda's default) and writes the blend to
-// out and the chosen jets to start_out / end_out (may be null). If the
+// values; lambda = 0 means blend_lambda's default) and, with
+// options.circle_parameter_range > 0, their points' v[], and writes the
+// blend to out and the chosen ends to start_out / end_out (may be null). If the
 // start blend is degenerate, the lambdas scaled by 1/2, 2, 1/4, 4 are tried
 // as starts; if all fail, that status (with *bad_t) is returned. Statuses:
 // invalid_argument (weights < 0, quadrature outside 1..16, bounds with

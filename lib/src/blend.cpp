@@ -30,24 +30,15 @@ bool finite3(const Vec3d& x) {
   return std::isfinite(x.x()) && std::isfinite(x.y()) && std::isfinite(x.z());
 }
 
-// x(u, v) as a u-series of order N: eqs. (11)/(27) expanded as in
-// evaluator.hpp, on series. (s1, s0) = (v, 1) for |v| <= 1, (1, 1/v) else.
+// x(u, v) as a u-series of order N (blend.hpp's point_series on the frame
+// at u). (s1, s0) = (v, 1) for |v| <= 1, (1, 1/v) else.
 template <int N>
 Status point_series(const Surface& S, double u, double v, Vec3<Taylor<double, N>>& x) {
-  using T = Taylor<double, N>;
-  CircleFrame<T> F;
+  CircleFrame<Taylor<double, N>> F;
   if (Status st = S.frame<N>(u, F); st != Status::ok) return st;
   const bool small = std::abs(v) <= 1.0;
-  const T s1(small ? v : 1.0), s0(small ? 1.0 : 1.0 / v);
-  const T W = F.alpha * s1 + F.beta * s0, G = F.gamma * s1 + F.delta * s0;
-  const Vec3<T> d = F.p - F.o;
-  const T aa = F.a.dot(F.a), ad = F.a.dot(d);
-  const Vec3<T> axd = F.a.cross(d);
-  const T W2 = W * W, G2 = G * G, two(2.0);
-  const T den = W2 + G2 * aa;
-  if (!(den.c[0] > 0)) return Status::degenerate_circle_parameter;
-  const Vec3<T> num = (W2 - G2 * aa) * d + (two * G2 * ad) * F.a + (two * W * G) * axd;
-  for (int j = 0; j < 3; ++j) x[j] = F.o[j] + num[j] / den;
+  if (!point_series(F, small ? v : 1.0, small ? 1.0 : 1.0 / v, x))
+    return Status::degenerate_circle_parameter;
   return Status::ok;
 }
 

@@ -946,7 +946,8 @@ CYC_API int cyc_optimize_closest_point(cyc_context* ctx, const cyc_surface* surf
 /* ------------------------------------------------------------ blend optimizer */
 
 /* The free parameters of a blend — the jets (lambda = phi', phi'', ...) of
- * both ends, see cyc_blend_end — chosen by a box-constrained
+ * both ends, see cyc_blend_end, and optionally where the chosen points v[]
+ * lie on the end circles (circle_parameter_range) — chosen by a box-constrained
  * Levenberg-Marquardt (exact derivatives by Ceres' automatic differentiation
  * through the construction) against a weighted objective (SPEC.md §8e). */
 #define CYC_BLEND_CANAL 0  /* cyc_blend_canal: K in 2..CYC_MAX_BLEND_ORDER */
@@ -998,12 +999,19 @@ typedef struct cyc_blend_objective {
  *  tangent lengths lambda of both ends, m = phi', ..., phi^(m); 0 = min(K,
  *  2); higher orders keep the given phi. |phi'| stays within
  *  [lambda_min_ratio, lambda_max_ratio] times the start |lambda| (with its
- *  sign), |phi^(m)| <= higher_bound |lambda|. */
+ *  sign), |phi^(m)| <= higher_bound |lambda|. circle_parameter_range > 0
+ *  frees the chosen points too (seed 000 §9.1 (i)): each v[j] as the angle
+ *  theta = 2 atan v (radians; v = infinity is theta = pi) moves within
+ *  theta_0 +- min(circle_parameter_range, 0.45 x the angle to its end's
+ *  nearest other point), so the points stay distinct and in order; the
+ *  chosen ends then carry the new v[] (a point that did not move keeps
+ *  its v exactly). 0 keeps the points. */
 typedef struct cyc_optimize_options {
   int free_orders;           /* 0..K, default 0 */
   double lambda_min_ratio;   /* in (0, 1], default 0.25 */
   double lambda_max_ratio;   /* >= 1, default 4 */
   double higher_bound;       /* >= 0, default 4 */
+  double circle_parameter_range; /* >= 0 radians, default 0 (points kept) */
   int max_iterations;        /* >= 0 (0: the start blend), default 50 */
   double function_tolerance; /* tolerances as Ceres' (SPEC §8e), default 1e-8 */
   double gradient_tolerance; /* default 1e-10 */
@@ -1035,7 +1043,7 @@ CYC_API void cyc_optimize_options_init(cyc_optimize_options* options);
 /** Optimizes the blend of `kind` (CYC_BLEND_CANAL or CYC_BLEND_RINGED) from
  *  start to end on [t0, t1]: the ends' lambda and phi[] are the start
  *  values. Writes the blend to *out (a new handle), and optionally the
- *  chosen ends (same surfaces and points, the optimized lambda and phi) and
+ *  chosen ends (same surfaces, the optimized lambda, phi and, if freed, v) and
  *  the summary. objective / options NULL: the defaults. Statuses:
  *  CYC_E_INVALID_ARGUMENT (a bad weight, quadrature, bound, count or kind),
  *  CYC_E_NOT_FINITE, CYC_E_NULL_ARGUMENT, CYC_E_DEGREE_TOO_HIGH, and those of
@@ -1113,10 +1121,12 @@ CYC_API int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
                                              order 1 = lambda */
 #define CYC_PARAMETER_BUMP_DISPLACEMENT 1 /* w[index] of the directrix bump */
 #define CYC_PARAMETER_BUMP_POSITION 2     /* tau of the directrix bump */
+#define CYC_PARAMETER_CIRCLE_POINT 3      /* theta = 2 atan v[order] at end `index` */
 typedef struct cyc_free_parameter {
   int role;            /* CYC_PARAMETER_* */
   int index;           /* the end or the component */
-  int order;           /* the derivative order (CYC_PARAMETER_JET), else 0 */
+  int order;           /* the derivative order (CYC_PARAMETER_JET), the point
+                          j (CYC_PARAMETER_CIRCLE_POINT), else 0 */
   double lower, upper; /* the box; lower == upper: held fixed */
   double start;        /* the start value (inside the box) */
 } cyc_free_parameter;
