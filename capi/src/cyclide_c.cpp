@@ -41,6 +41,8 @@ CYC_SAME(CYC_E_TOO_FEW_LINES, too_few_lines);
 CYC_SAME(CYC_E_NO_NORMAL_FORM, no_normal_form);
 CYC_SAME(CYC_E_NOT_PYTHAGOREAN, not_pythagorean);
 CYC_SAME(CYC_E_INTERSECTING_CIRCLES, intersecting_circles);
+CYC_SAME(CYC_E_NESTED_SPHERES, nested_spheres);
+CYC_SAME(CYC_E_CURVATURE_RADIUS_TOO_LARGE, curvature_radius_too_large);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
@@ -96,7 +98,8 @@ const char* cyc_status_name(int status) {
     case CYC_E_PARALLEL_LINES: case CYC_E_NO_COMMON_NORMAL: case CYC_E_RANK_DEFICIENT:
     case CYC_E_AT_INVERSION_CENTER: case CYC_E_NOT_PARABOLIC: case CYC_E_EMPTY_REAL_LOCUS:
     case CYC_E_TOO_FEW_LINES: case CYC_E_NO_NORMAL_FORM: case CYC_E_NOT_PYTHAGOREAN:
-    case CYC_E_INTERSECTING_CIRCLES:
+    case CYC_E_INTERSECTING_CIRCLES: case CYC_E_NESTED_SPHERES:
+    case CYC_E_CURVATURE_RADIUS_TOO_LARGE:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));

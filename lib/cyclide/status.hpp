@@ -31,6 +31,8 @@ enum class Status : int {
   no_normal_form = 114,     // Props. 2, 8, 9: the input has no normal form (coplanar, ...)
   not_pythagorean = 115,    // seed 001 §3-4: no P-curve (a norm is not a polynomial square)
   intersecting_circles = 116,  // seed 001 §6: two joining circles on the auxiliary sphere meet
+  nested_spheres = 117,        // seed 002: one sphere inside (or equal to) the other
+  curvature_radius_too_large = 118,  // seed 002 Remark 2: kappa r >= 1 at an end (a c <= 0)
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

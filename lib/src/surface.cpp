@@ -543,6 +543,8 @@ const char* status_name(Status s) noexcept {
     case Status::no_normal_form: return "CYC_E_NO_NORMAL_FORM";
     case Status::not_pythagorean: return "CYC_E_NOT_PYTHAGOREAN";
     case Status::intersecting_circles: return "CYC_E_INTERSECTING_CIRCLES";
+    case Status::nested_spheres: return "CYC_E_NESTED_SPHERES";
+    case Status::curvature_radius_too_large: return "CYC_E_CURVATURE_RADIUS_TOO_LARGE";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

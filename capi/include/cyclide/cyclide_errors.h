@@ -31,6 +31,8 @@ enum cyc_status {
   CYC_E_NO_NORMAL_FORM = 114,      /* Props. 2/8/9: input without a normal form */
   CYC_E_NOT_PYTHAGOREAN = 115,     /* seed 001: the data admit no P-curve */
   CYC_E_INTERSECTING_CIRCLES = 116, /* seed 001 §6: joining circles on the sphere meet */
+  CYC_E_NESTED_SPHERES = 117,       /* seed 002: one sphere inside (or equal to) the other */
+  CYC_E_CURVATURE_RADIUS_TOO_LARGE = 118, /* seed 002 Remark 2: kappa r >= 1 at an end */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 
