@@ -17,6 +17,7 @@
 #include "cyclide/cyclide.h"
 #include "cyclide/darboux_classify.hpp"
 #include "cyclide/implicitize.hpp"
+#include "cyclide/sphere_skin.hpp"
 #include "cyclide/surface.hpp"
 
 #if !defined(__GLIBC__)
@@ -695,6 +696,39 @@ TEST(AllocFreeCore, ImplicitizeAndClassify) {
   });
   EXPECT_EQ(bad, 0);
   EXPECT_TRUE(F.is_darboux);
+  EXPECT_EQ(h.allocations, 0);
+  EXPECT_EQ(h.frees, 0);
+}
+
+// Seed 002's sphere skins in the core (issue 6): construction (the RMF
+// table with error control), evaluation with partials and normals, grids,
+// the twist measure and chains allocate nothing.
+TEST(AllocFreeCore, SphereSkin) {
+  using namespace cyclide;
+  SkinEnd ends[3];
+  ASSERT_EQ(skin_end_from_sphere({0, 0, 0}, 1.0, {0.3, 0, 0}, {3, 0, 0}, ends[0]), Status::ok);
+  const Vec3d ax = Vec3d(1, 0.5, 0.3).normalized();
+  ASSERT_EQ(skin_end_from_sphere({4, 1, 0}, 0.8, Vec3d(4, 1, 0) - 0.1 * ax, 3.0 * ax, ends[1]),
+            Status::ok);
+  ASSERT_EQ(skin_end_from_sphere({7, 3, 1}, 1.1, {7, 3, 1}, {3, 1, 1}, ends[2]), Status::ok);
+  static SphereSkin S, chain[2];
+  static double theta[16], t[16], X[3 * 256], N[3 * 256];
+  for (int i = 0; i < 16; ++i) theta[i] = 0.4 * i - 3, t[i] = i / 15.0;
+  int bad = 0;
+  double twist = 0;
+  const Heap h = measure([&] {
+    for (RmfMethod m : {RmfMethod::reference, RmfMethod::double_reflection}) {
+      SkinOptions o;
+      o.method = m;
+      bad += make_sphere_skin(ends[0], ends[1], o, S) != Status::ok;
+      double x[3], a[3], b[3], n[3];
+      bad += skin_eval(S, 0.7, 0.4, x, a, b, n) != Status::ok;
+      bad += skin_eval_grid(S, theta, 16, t, 16, X, N) != Status::ok;
+      bad += skin_twist(S, 1.0, twist) != Status::ok;
+      bad += make_sphere_skin_chain(ends, 3, o, chain) != Status::ok;
+    }
+  });
+  EXPECT_EQ(bad, 0);
   EXPECT_EQ(h.allocations, 0);
   EXPECT_EQ(h.frees, 0);
 }

@@ -138,6 +138,11 @@ inline const char* explain(Status s) {
              "planar Hermite data vanish at an end)";
     case Status::intersecting_circles:
       return "two joining circles on the auxiliary sphere intersect (choose other lambdas)";
+    case Status::nested_spheres:
+      return "one sphere lies inside (or equals) the other: no skin touches both from outside";
+    case Status::curvature_radius_too_large:
+      return "the spine's curvature times the circle's radius is >= 1 at an end (seed 002 "
+             "Remark 2: a c <= 0, the skin folds; lengthen the end tangents)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";
