@@ -23,6 +23,8 @@
 // interpolation of W1, W1', W1'' (exact from the equation). Allocation-free.
 #pragma once
 
+#include <cstddef>
+
 #include "cyclide/status.hpp"
 #include "cyclide/vec.hpp"
 
@@ -161,16 +163,18 @@ Status make_sphere_skin_from(const SkinEnd& start, const SkinEnd& end, const Vec
 
 // s(theta, t), ds/dtheta, ds/dt and the unit normal (ds/dtheta x ds/dt
 // normalized: outward where lambda > 0), any output may be null. theta any
-// finite number, t in [0, 1] (bad_domain outside). singular_point where
-// |s_theta x s_t| <= 1e-14 |s_theta| |s_t| (only the normal is then not
-// written... nothing is written on error).
+// finite number, t in [0, 1] (bad_domain outside). With normal requested,
+// singular_point where |s_theta x s_t| <= 1e-14 |s_theta| |s_t|. Nothing
+// is written on error.
 Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double* x_theta,
                  double* x_t, double* normal);
-// The grid theta[i] x t[j] (nt values of theta, nu of t), row-major by t
-// (index j * ntheta + i), 3 doubles per output point. all-or-nothing: on
-// a singular point singular_point is returned (with *bad = the index).
+// The grid theta[i] x t[j] (ntheta values of theta, nt of t), row-major by
+// t (index j * ntheta + i), 3 doubles per output point; x or normal may be
+// null. The arguments are validated before anything is written; normals
+// at singular points are written as (0, 0, 0) and counted in *singular
+// (may be null), as the circle-family grids do.
 Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, const double* t,
-                      int nt, double* x, double* normal, int* bad = nullptr);
+                      int nt, double* x, double* normal, std::size_t* singular = nullptr);
 
 // lambda(t; theta) and the end scalars a_i(theta), a_f(theta) (eqs. (9),
 // (11)).

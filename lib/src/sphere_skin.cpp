@@ -383,7 +383,8 @@ namespace {
 struct SkinColumn {
   Vec3d alpha, d1, W1, W2, dW1, dW2;
   double H[4], dH[4];  // cubic Hermite basis (p0, m0, p1, m1) and derivatives
-  double turn, dturn;  // delta s(t), delta s'(t)
+  double dturn;        // delta s'(t), s(t) = 3 t^2 - 2 t^3
+  double cturn, sturn; // cos, sin of delta s(t)
 };
 
 SkinColumn column(const SphereSkin& S, double t) {
@@ -406,16 +407,28 @@ SkinColumn column(const SphereSkin& S, double t) {
   c.dH[1] = 3 * t2 - 4 * t + 1;
   c.dH[2] = -6 * t2 + 6 * t;
   c.dH[3] = 3 * t2 - 2 * t;
-  c.turn = S.delta * (3 * t2 - 2 * t3);
+  const double turn = S.delta * (3 * t2 - 2 * t3);
+  c.cturn = std::cos(turn);
+  c.sturn = std::sin(turn);
   c.dturn = S.delta * (6 * t - 6 * t2);
   return c;
 }
 
+// cos and sin of theta and of theta + delta (the grid forms them once per
+// theta; the rotation by delta s(t) is applied by the addition theorem).
+struct ThetaTrig {
+  double c, s, cd, sd;
+};
+
+ThetaTrig theta_trig(const SphereSkin& S, double theta) {
+  return {std::cos(theta), std::sin(theta), std::cos(theta + S.delta),
+          std::sin(theta + S.delta)};
+}
+
 // a(theta) of end e and its theta-derivative.
-void end_a(const SphereSkin& S, int e, double theta, double& a, double& da) {
-  const double phi = theta + (e ? S.delta : 0.0);
+void end_a(const SphereSkin& S, int e, const ThetaTrig& g, double& a, double& da) {
+  const double c = e ? g.cd : g.c, s = e ? g.sd : g.s;
   const double* k = S.a_coeff[e];
-  const double c = std::cos(phi), s = std::sin(phi);
   a = k[0] - (c * k[1] + s * k[2]);
   da = s * k[1] - c * k[2];
 }
@@ -424,16 +437,17 @@ struct SkinPoint {
   Vec3d x, xt, xth;
 };
 
-SkinPoint point(const SphereSkin& S, const SkinColumn& c, double theta) {
+SkinPoint point(const SphereSkin& S, const SkinColumn& c, const ThetaTrig& g) {
   const double ri = S.ends[0].radius, rf = S.ends[1].radius;
   double ai, dai, af, daf;
-  end_a(S, 0, theta, ai, dai);
-  end_a(S, 1, theta, af, daf);
+  end_a(S, 0, g, ai, dai);
+  end_a(S, 1, g, af, daf);
   // lambda: the cubic Hermite (6), (7), (8), (10).
   const double lam = c.H[0] * ri - c.H[1] * ai * ri + c.H[2] * rf - c.H[3] * af * rf;
   const double lam_t = c.dH[0] * ri - c.dH[1] * ai * ri + c.dH[2] * rf - c.dH[3] * af * rf;
   const double lam_th = -c.H[1] * dai * ri - c.H[3] * daf * rf;
-  const double phi = theta + c.turn, cp = std::cos(phi), sp = std::sin(phi);
+  // phi = theta + delta s(t).
+  const double cp = g.c * c.cturn - g.s * c.sturn, sp = g.s * c.cturn + g.c * c.sturn;
   const Vec3d w = cp * c.W1 + sp * c.W2;
   const Vec3d w_th = -sp * c.W1 + cp * c.W2;
   const Vec3d w_t = cp * c.dW1 + sp * c.dW2 + c.dturn * w_th;
@@ -462,9 +476,10 @@ void put(const Vec3d& v, double* out) {
 
 double skin_lambda(const SphereSkin& S, double theta, double t, double* a) {
   const SkinColumn c = column(S, t);
+  const ThetaTrig g = theta_trig(S, theta);
   double ai, dai, af, daf;
-  end_a(S, 0, theta, ai, dai);
-  end_a(S, 1, theta, af, daf);
+  end_a(S, 0, g, ai, dai);
+  end_a(S, 1, g, af, daf);
   if (a) a[0] = ai, a[1] = af;
   const double ri = S.ends[0].radius, rf = S.ends[1].radius;
   return c.H[0] * ri - c.H[1] * ai * ri + c.H[2] * rf - c.H[3] * af * rf;
@@ -474,7 +489,7 @@ Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double*
                  double* x_t, double* normal) {
   if (!std::isfinite(theta) || !std::isfinite(t)) return Status::not_finite;
   if (!(t >= 0.0 && t <= 1.0)) return Status::bad_domain;
-  const SkinPoint p = point(S, column(S, t), theta);
+  const SkinPoint p = point(S, column(S, t), theta_trig(S, theta));
   Vec3d n;
   if (normal && !unit_normal(p, n)) return Status::singular_point;
   if (!input_ok(p.x) || !input_ok(p.xt) || !input_ok(p.xth)) return Status::numerical_overflow;
@@ -486,7 +501,7 @@ Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double*
 }
 
 Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, const double* t,
-                      int nt, double* x, double* normal, int* bad) {
+                      int nt, double* x, double* normal, std::size_t* singular) {
   if (!theta || !t) return Status::null_argument;
   if (ntheta < 0 || nt < 0) return Status::invalid_argument;
   for (int i = 0; i < ntheta; ++i)
@@ -495,24 +510,30 @@ Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, cons
     if (!std::isfinite(t[j])) return Status::not_finite;
     if (!(t[j] >= 0.0 && t[j] <= 1.0)) return Status::bad_domain;
   }
-  // Two passes keep the outputs all-or-nothing: the normals are checked
-  // first only when asked for (a singular point is the only failure).
-  for (int pass = normal ? 0 : 1; pass < 2; ++pass)
+  // Validated: every point is written (singular normals as (0, 0, 0), as
+  // the circle-family grids do). cos/sin of theta once per theta (in blocks
+  // of 64 on the stack), the spine and RMF once per t.
+  constexpr int kBlock = 64;
+  ThetaTrig g[kBlock];
+  std::size_t bad = 0;
+  for (int i0 = 0; i0 < ntheta; i0 += kBlock) {
+    const int m = std::min(kBlock, ntheta - i0);
+    for (int i = 0; i < m; ++i) g[i] = theta_trig(S, theta[i0 + i]);
     for (int j = 0; j < nt; ++j) {
       const SkinColumn c = column(S, t[j]);
-      for (int i = 0; i < ntheta; ++i) {
-        const SkinPoint p = point(S, c, theta[i]);
-        const size_t k = size_t(j) * size_t(ntheta) + size_t(i);
-        Vec3d n;
-        if (normal && !unit_normal(p, n)) {
-          if (bad) *bad = int(k);
-          return Status::singular_point;
-        }
-        if (pass == 0) continue;
+      for (int i = 0; i < m; ++i) {
+        const SkinPoint p = point(S, c, g[i]);
+        const std::size_t k = std::size_t(j) * std::size_t(ntheta) + std::size_t(i0 + i);
         if (x) put(p.x, x + 3 * k);
-        if (normal) put(n, normal + 3 * k);
+        if (normal) {
+          Vec3d n = Vec3d::Zero();
+          if (!unit_normal(p, n)) ++bad;
+          put(n, normal + 3 * k);
+        }
       }
     }
+  }
+  if (singular) *singular = bad;
   return Status::ok;
 }
 
@@ -526,7 +547,7 @@ Status skin_twist(const SphereSkin& S, double theta, double& twist) {
     for (int i = 0; i < kNodes; ++i) {
       const double t = (p + z[i]) / kPieces;
       const SkinColumn c = column(S, t);
-      const SkinPoint q = point(S, c, theta);
+      const SkinPoint q = point(S, c, theta_trig(S, theta));
       const Vec3d y = q.x - c.alpha, dy = q.xt - c.d1;
       const double yy = y.squaredNorm();
       if (!(yy > 0)) return Status::singular_point;  // the curve meets the spine
