@@ -1,5 +1,5 @@
 // Seed 002 Remark 2: Ceres picks tangent lengths that make a sphere skin
-// valid (labels "optim;sphere_skin"; SPEC.md §9).
+// valid (labels "optim;sphere_skin"; SPEC.md §8g).
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

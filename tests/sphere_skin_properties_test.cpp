@@ -1,5 +1,5 @@
 // Seed 002 properties over random valid inputs (labels
-// "property;sphere_skin"; SPEC.md §9): two spheres with touching circles
+// "property;sphere_skin"; SPEC.md §8g): two spheres with touching circles
 // whose axes point roughly from one to the other, random tangent lengths.
 // Inputs the skin refuses (nested spheres, kappa r >= 1) are discarded.
 

@@ -1,6 +1,6 @@
 // Seed 002 (Hoffmann, Monterde, Troll 2015) with ERRATA.md §002: the
 // equations of the paper checked on the skin (labels "paper;sphere_skin";
-// SPEC.md §9): Remark 2's end curvature, lambda's closed form (§4), the
+// SPEC.md §8g): Remark 2's end curvature, lambda's closed form (§4), the
 // Hermite conditions (4) with (6)-(11) and v = a (x - q), eq. (2)-(3)
 // with the usual torsion (the ERRATA's sign), the two RMF integrators,
 // the baselines of §2 and their twist, chains, and the degenerate

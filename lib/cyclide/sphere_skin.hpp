@@ -1,5 +1,5 @@
 // Seed 002 (Hoffmann, Monterde, Troll 2015): blending two spheres by a
-// rotation-minimizing surface, and skins of chains of spheres (SPEC.md §9).
+// rotation-minimizing surface, and skins of chains of spheres (SPEC.md §8g).
 // Read with ERRATA.md §002: v = a (x - q), theta measured from the
 // principal normal, the torsion sign, beta' and the validity a c > 0.
 //

@@ -1,6 +1,6 @@
 // Seed 002 Remark 2 (and ERRATA.md: a c > 0 iff kappa r < 1 at the ends):
 // tangent lengths of the skin's spine chosen by Ceres so that the skin is
-// valid (SPEC.md §9). The optimizer tier: allocates (Ceres).
+// valid (SPEC.md §8g). The optimizer tier: allocates (Ceres).
 #pragma once
 
 #include "cyclide/sphere_skin.hpp"

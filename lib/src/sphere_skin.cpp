@@ -1,5 +1,5 @@
 // Seed 002: sphere skins by rotation-minimizing transport (sphere_skin.hpp,
-// SPEC.md §9).
+// SPEC.md §8g).
 #include "cyclide/sphere_skin.hpp"
 
 #include <algorithm>
