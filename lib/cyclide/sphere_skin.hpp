@@ -16,11 +16,15 @@
 // not circles (lambda depends on theta through a_i, a_f), so the skin is a
 // surface of its own, not a circle family.
 //
-// The RMF is not rational: it is tabulated on 256 intervals by one of two
-// integrators with error control (double reflection, Wang-Juttler-Zheng-Liu
-// 2008; or the reference: RK4 with Richardson extrapolation on the RMF
-// equation) and evaluated between the nodes by quintic Hermite
-// interpolation of W1, W1', W1'' (exact from the equation). Allocation-free.
+// The RMF is not rational. Two integrators with error control: the
+// reference reduces the RMF equation to its angle against an explicit
+// frame (the minimal rotation of the piece's start tangent, on pieces where
+// the tangent turns less than ~45 degrees), whose rate is explicit, and
+// integrates that rate as a Chebyshev series (exact integration of the
+// interpolant, degree doubled until the tail is below the tolerance);
+// double reflection (Wang, Juttler, Zheng, Liu 2008) tabulates W1 on 256
+// intervals with step doubling and is evaluated between the nodes by
+// quintic Hermite interpolation of W1, W1', W1''. Allocation-free.
 #pragma once
 
 #include <cstddef>
@@ -76,33 +80,52 @@ double skin_spine_curvature(const SkinSpine& a, double t);
 
 // How W1 is transported along the spine.
 enum class RmfMethod : int {
-  reference = 0,          // RK4 + Richardson on the RMF equation (default)
+  reference = 0,          // the angle's rate as a Chebyshev series (default)
   double_reflection = 1,  // Wang, Juttler, Zheng, Liu 2008
 };
 
-constexpr int kRmfIntervals = 256;     // table intervals on [0, 1]
-constexpr int kRmfMaxSubsteps = 256;   // integration steps per interval (at most)
+constexpr int kRmfIntervals = 256;     // double reflection: table intervals on [0, 1]
+constexpr int kRmfMaxSubsteps = 256;   // double reflection: steps per interval (at most)
+constexpr int kRmfMaxPieces = 16;      // reference: pieces of [0, 1]
+constexpr int kRmfMaxDegree = 64;      // reference: Chebyshev degree per piece (at most)
 
-// W1 at t_k = k / kRmfIntervals with W1' and W1'' (from the RMF equation).
+// Reference: on [t0, t1], W1 = cos(phi) U + sin(phi) (b x U) with b the
+// unit tangent, U(t) = u - ((b . u)/(1 + a . b)) (a + b) the minimal
+// rotation of a = b(t0) onto b(t) applied to u = W1(t0), and phi(t) the
+// Chebyshev series phi[0..degree] in x = (2t - t0 - t1)/(t1 - t0).
+struct RmfPiece {
+  double t0 = 0.0, t1 = 1.0;
+  Vec3d a = Vec3d::Zero(), u = Vec3d::Zero();
+  int degree = 0;
+  double phi[kRmfMaxDegree + 2] = {};
+};
+
 struct RmfTable {
+  RmfMethod method = RmfMethod::reference;
+  int pieces = 0;  // reference
+  RmfPiece piece[kRmfMaxPieces];
+  // Double reflection: W1 at t_k = k / kRmfIntervals with W1' and W1''
+  // (from the RMF equation).
   Vec3d w[kRmfIntervals + 1];
   Vec3d dw[kRmfIntervals + 1];
   Vec3d ddw[kRmfIntervals + 1];
-  RmfMethod method = RmfMethod::reference;
-  int substeps = 0;             // integration steps per interval used
-  double error_estimate = 0.0;  // estimated max |W1 - exact| at the nodes
+  int substeps = 0;  // steps per interval (double reflection) or the largest degree (reference)
+  double error_estimate = 0.0;  // estimated max |W1 - exact|
 };
 
 // Transports the unit vector w0 (orthogonal to alpha'(0); it is projected
-// and normalized) along the spine, doubling the steps until the estimated
-// error is <= tolerance (> 0). Statuses: invalid_argument (tolerance <= 0,
-// w0 parallel to alpha'(0)), not_finite, zero_tangent (alpha' vanishes on
-// [0, 1]), numerical_overflow (the tolerance is not met with
-// kRmfMaxSubsteps steps per interval; the table is not written).
+// and normalized) along the spine, doubling the steps (double reflection)
+// or the degree (reference) until the estimated error is <= tolerance
+// (> 0). Statuses: invalid_argument (tolerance <= 0, w0 parallel to
+// alpha'(0)), not_finite, zero_tangent (alpha' vanishes on [0, 1]),
+// numerical_overflow (the tolerance is not met with kRmfMaxSubsteps steps
+// per interval, degree kRmfMaxDegree or kRmfMaxPieces pieces; the table is
+// not written).
 Status transport_rmf(const SkinSpine& spine, const Vec3d& w0, RmfMethod method,
                      double tolerance, RmfTable& out);
-// W1(t), W1'(t) (t in [0, 1]): quintic Hermite between the nodes,
-// projected orthogonal to alpha'(t) and normalized; W1' from the equation.
+// W1(t), W1'(t) (t in [0, 1]): reference, from the piece's angle series;
+// double reflection, quintic Hermite between the nodes, projected
+// orthogonal to alpha'(t) and normalized. W1' from the equation.
 void rmf_at(const SkinSpine& spine, const RmfTable& table, double t, Vec3d& w1, Vec3d* dw1);
 
 // Which points of the two circles the parameter curves theta = const join.

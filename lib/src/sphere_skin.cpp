@@ -110,24 +110,6 @@ Vec3d rmf_second(const SkinSpine& a, double t, const Vec3d& w) {
   return -dg * d1 - g * d2;
 }
 
-// One table of W1 with m steps per interval. False if a step degenerates.
-bool rk4_table(const SkinSpine& a, const Vec3d& w0, int m, Vec3d* w) {
-  const int n = kRmfIntervals * m;
-  const double h = 1.0 / n;
-  Vec3d y = w0;
-  w[0] = y;
-  for (int i = 0; i < n; ++i) {
-    const double t = double(i) / n;
-    const Vec3d k1 = rmf_rate(a, t, y);
-    const Vec3d k2 = rmf_rate(a, t + 0.5 * h, y + 0.5 * h * k1);
-    const Vec3d k3 = rmf_rate(a, t + 0.5 * h, y + 0.5 * h * k2);
-    const Vec3d k4 = rmf_rate(a, t + h, y + h * k3);
-    y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-    if ((i + 1) % m == 0) w[(i + 1) / m] = y;
-  }
-  return input_ok(y);
-}
-
 // Double reflection (Wang, Juttler, Zheng, Liu 2008, Algorithm 1): reflect
 // the frame in the bisector plane of x_k x_{k+1}, then in the plane that
 // takes the reflected tangent to t_{k+1}.
@@ -153,32 +135,227 @@ bool reflection_table(const SkinSpine& a, const Vec3d& w0, int m, Vec3d* w) {
   return input_ok(r);
 }
 
-// |alpha'| stays away from 0 on [0, 1]: the minimum over the table nodes,
-// refined by golden sections around the smallest, against 1e-8 of the
-// largest.
+// |alpha'| stays away from 0 on [0, 1]: |alpha'|^2 is a quartic, so it has
+// at most two local minima; every local minimum of 33 samples is refined
+// by golden sections on its bracket, against 1e-16 of the largest sample.
 bool spine_regular(const SkinSpine& a) {
-  int k = 0;
-  double lo = HUGE_VAL, hi = 0;
-  for (int i = 0; i <= kRmfIntervals; ++i) {
-    const double n = a.d1(double(i) / kRmfIntervals).squaredNorm();
-    if (n < lo) lo = n, k = i;
-    hi = std::max(hi, n);
+  constexpr int kSamples = 32;
+  double n2[kSamples + 1], hi = 0;
+  for (int i = 0; i <= kSamples; ++i) {
+    n2[i] = a.d1(double(i) / kSamples).squaredNorm();
+    hi = std::max(hi, n2[i]);
   }
-  double l = double(std::max(k - 1, 0)) / kRmfIntervals;
-  double r = double(std::min(k + 1, kRmfIntervals)) / kRmfIntervals;
+  if (!std::isfinite(hi) || !(hi > 0)) return false;
+  double lo = HUGE_VAL;
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  for (int it = 0; it < 60; ++it) {
-    const double m1 = r - g * (r - l), m2 = l + g * (r - l);
-    if (a.d1(m1).squaredNorm() < a.d1(m2).squaredNorm()) r = m2;
-    else l = m1;
+  for (int k = 0; k <= kSamples; ++k) {
+    lo = std::min(lo, n2[k]);
+    if ((k > 0 && n2[k - 1] < n2[k]) || (k < kSamples && n2[k + 1] < n2[k])) continue;
+    double l = double(std::max(k - 1, 0)) / kSamples, r = double(std::min(k + 1, kSamples)) / kSamples;
+    for (int it = 0; it < 50; ++it) {
+      const double m1 = r - g * (r - l), m2 = l + g * (r - l);
+      if (a.d1(m1).squaredNorm() < a.d1(m2).squaredNorm()) r = m2;
+      else l = m1;
+    }
+    lo = std::min(lo, a.d1(0.5 * (l + r)).squaredNorm());
   }
-  lo = std::min(lo, a.d1(0.5 * (l + r)).squaredNorm());
-  return std::isfinite(hi) && lo > 1e-16 * hi && hi > 0;
+  return lo > 1e-16 * hi;
 }
 
 Vec3d orthonormal_to(const Vec3d& w, const Vec3d& d1) {
   const Vec3d u = d1.normalized();
   return (w - w.dot(u) * u).normalized();
+}
+
+}  // namespace
+
+namespace {
+
+// The reference frame of a piece and the RMF's angle rate against it:
+// b the unit tangent, U = R(a -> b) u = u - k (a + b) with k = (b . u)/(1 +
+// a . b) (u orthogonal to a), V = b x U, and omega = phi' = -U' . V (the
+// RMF does not turn about b; the frame (b, U, V) turns at U' . V).
+struct PieceFrame {
+  Vec3d b, U, V;
+  double omega;
+};
+
+PieceFrame piece_frame(const SkinSpine& s, const Vec3d& a, const Vec3d& u, double t) {
+  const Vec3d d1 = s.d1(t), d2 = s.d2(t);
+  const double len = d1.norm();
+  PieceFrame F;
+  F.b = d1 / len;
+  const Vec3d db = (d2 - d2.dot(F.b) * F.b) / len;
+  const double den = 1.0 + a.dot(F.b), bu = F.b.dot(u);
+  const double k = bu / den;
+  const double dk = (db.dot(u) * den - bu * a.dot(db)) / (den * den);
+  F.U = u - k * (a + F.b);
+  const Vec3d dU = -dk * (a + F.b) - k * db;
+  F.V = F.b.cross(F.U);
+  F.omega = -dU.dot(F.V);
+  return F;
+}
+
+// Sum of c[m] T_m(x), m = 0..n (Clenshaw).
+double chebyshev(const double* c, int n, double x) {
+  double b1 = 0, b2 = 0;
+  for (int m = n; m >= 1; --m) {
+    const double b0 = c[m] + 2 * x * b1 - b2;
+    b2 = b1;
+    b1 = b0;
+  }
+  return c[0] + x * b1 - b2;
+}
+
+// The pieces: from each start node of 65, the last node whose unit
+// tangent stays within ~45 degrees (b_s . b_e >= 0.7) of the start's.
+int split_pieces(const SkinSpine& s, double (&bounds)[kRmfMaxPieces + 1]) {
+  constexpr int kNodes = 64;
+  Vec3d b[kNodes + 1];
+  for (int k = 0; k <= kNodes; ++k) b[k] = s.d1(double(k) / kNodes).normalized();
+  int n = 0, start = 0;
+  bounds[0] = 0.0;
+  while (start < kNodes) {
+    int end = start + 1;
+    while (end < kNodes && b[start].dot(b[end + 1]) >= 0.7) ++end;
+    if (n == kRmfMaxPieces) return -1;
+    bounds[++n] = double(end) / kNodes;
+    start = end;
+  }
+  return n;
+}
+
+// cos(pi j / 64), j < 128: the DCT's cosines for every n | 64.
+const double* cosines64() {
+  struct Table {
+    double c[128];
+    Table() {
+      for (int j = 0; j < 128; ++j) c[j] = std::cos(std::acos(-1.0) * j / 64);
+    }
+  };
+  static const Table table;  // thread-safe initialization, no allocation
+  return table.c;
+}
+
+// One reference piece from (a, u) at t0 to t1: the angle rate at the
+// Chebyshev-Lobatto nodes x_k = cos(pi k / n), its coefficients (DCT-I),
+// integrated exactly; n doubled from 8 (the nodes are nested) until the
+// tail half (|c_{n-2}| + |c_{n-1}| + |c_n|) is <= tol.
+bool reference_piece(const SkinSpine& s, RmfPiece& P, double tol, double& estimate) {
+  const double mid = 0.5 * (P.t0 + P.t1), half = 0.5 * (P.t1 - P.t0);
+  static_assert(kRmfMaxDegree == 64, "cosines64 serves n | 64");
+  double f[kRmfMaxDegree + 1];
+  int n = 8;
+  for (int k = 0; k <= n; ++k)
+    f[k] = piece_frame(s, P.a, P.u, mid + half * cosines64()[k * (kRmfMaxDegree / n)]).omega;
+  for (;;) {
+    double c[kRmfMaxDegree + 3] = {};  // c[n + 1], c[n + 2] = 0 for the integral
+    const double* cosine = cosines64();  // cos(pi j / n) = cosine[j * 64 / n]
+    const int stride = kRmfMaxDegree / n;
+    for (int m = 0; m <= n; ++m) {
+      double sum = 0.5 * (f[0] + (m % 2 ? -f[n] : f[n]));
+      for (int k = 1; k < n; ++k) sum += f[k] * cosine[((m * k) % (2 * n)) * stride];
+      c[m] = sum * 2.0 / n;
+    }
+    c[0] *= 0.5;
+    c[n] *= 0.5;
+    double tail = half * (std::abs(c[n - 2]) + std::abs(c[n - 1]) + std::abs(c[n]));
+    for (int m = 0; m <= n; ++m)
+      if (!std::isfinite(c[m])) return false;
+    if (tail <= tol || 2 * n > kRmfMaxDegree) {
+      if (!(tail <= tol)) return false;
+      // phi = integral of the series from x = -1, times dt/dx = half:
+      // C_m = half (c_{m-1} - c_{m+1}) / (2m), C_0 from phi(-1) = 0.
+      P.degree = n + 1;
+      double alt = 0;
+      for (int m = 1; m <= n + 1; ++m) {
+        const double prev = m == 1 ? 2 * c[0] : c[m - 1];
+        P.phi[m] = half * (prev - c[m + 1]) / (2.0 * m);
+        alt += (m % 2 ? -1.0 : 1.0) * P.phi[m];
+      }
+      P.phi[0] = -alt;
+      estimate = tail;
+      return true;
+    }
+    // Double n: the old nodes are the even ones.
+    for (int k = n; k >= 0; --k) f[2 * k] = f[k];
+    n *= 2;
+    for (int k = 1; k < n; k += 2)
+      f[k] = piece_frame(s, P.a, P.u, mid + half * cosines64()[k * (kRmfMaxDegree / n)]).omega;
+  }
+}
+
+// W1 at t in piece P.
+Vec3d piece_w1(const SkinSpine& s, const RmfPiece& P, double t) {
+  const PieceFrame F = piece_frame(s, P.a, P.u, t);
+  const double x = (2 * t - P.t0 - P.t1) / (P.t1 - P.t0);
+  const double phi = chebyshev(P.phi, P.degree, std::min(std::max(x, -1.0), 1.0));
+  return std::cos(phi) * F.U + std::sin(phi) * F.V;
+}
+
+// The pieces of split_pieces, each halved (at most 10 times) while its
+// series does not converge by degree kRmfMaxDegree (shorter pieces
+// converge faster: the complex singularities of the rate move away
+// relative to the piece).
+Status reference_rmf(const SkinSpine& spine, const Vec3d& u0, double tolerance, RmfTable& T) {
+  double bounds[kRmfMaxPieces + 1];
+  const int nb = split_pieces(spine, bounds);
+  if (nb < 1) return Status::numerical_overflow;
+  Vec3d u = u0;
+  double total = 0, t = 0;
+  int degree = 0, n = 0, next = 1;
+  while (t < 1.0) {
+    while (bounds[next] <= t) ++next;
+    double end = bounds[next];
+    for (int halvings = 0;; ++halvings) {
+      if (n == kRmfMaxPieces || halvings > 10) return Status::numerical_overflow;
+      RmfPiece& P = T.piece[n];
+      P.t0 = t;
+      P.t1 = end;
+      P.a = spine.d1(P.t0).normalized();
+      P.u = (u - u.dot(P.a) * P.a).normalized();
+      double est = 0;
+      if (reference_piece(spine, P, tolerance * (P.t1 - P.t0), est)) {
+        total += est;
+        degree = std::max(degree, P.degree);
+        u = piece_w1(spine, P, P.t1);
+        t = end;
+        ++n;
+        break;
+      }
+      end = 0.5 * (t + end);
+    }
+  }
+  T.pieces = n;
+  T.substeps = degree;
+  T.error_estimate = total;
+  return Status::ok;
+}
+
+Status reflection_rmf(const SkinSpine& spine, const Vec3d& u0, double tolerance, RmfTable& T) {
+  // Step doubling: the tables with m and 2m steps per interval differ by
+  // ~15 times the error of the finer one (the method is of order 4).
+  Vec3d coarse[kRmfIntervals + 1], fine[kRmfIntervals + 1];
+  if (!reflection_table(spine, u0, 1, coarse)) return Status::numerical_overflow;
+  for (int m = 2; m <= kRmfMaxSubsteps; m *= 2) {
+    if (!reflection_table(spine, u0, m, fine)) return Status::numerical_overflow;
+    double diff = 0;
+    for (int k = 0; k <= kRmfIntervals; ++k) diff = std::max(diff, (fine[k] - coarse[k]).norm());
+    const double estimate = diff / 15.0;
+    if (estimate <= tolerance) {
+      for (int k = 0; k <= kRmfIntervals; ++k) {
+        const double t = double(k) / kRmfIntervals;
+        T.w[k] = orthonormal_to(fine[k], spine.d1(t));
+        T.dw[k] = rmf_rate(spine, t, T.w[k]);
+        T.ddw[k] = rmf_second(spine, t, T.w[k]);
+      }
+      T.substeps = m;
+      T.error_estimate = estimate;
+      return Status::ok;
+    }
+    std::copy(fine, fine + kRmfIntervals + 1, coarse);
+  }
+  return Status::numerical_overflow;  // the tolerance is not met
 }
 
 }  // namespace
@@ -192,50 +369,28 @@ Status transport_rmf(const SkinSpine& spine, const Vec3d& w0, RmfMethod method,
   if (method != RmfMethod::reference && method != RmfMethod::double_reflection)
     return Status::invalid_argument;
   if (!spine_regular(spine)) return Status::zero_tangent;
-  const Vec3d d0 = spine.d1(0.0);
-  const Vec3d start = w0 - w0.dot(d0.normalized()) * d0.normalized();
+  const Vec3d d0 = spine.d1(0.0).normalized();
+  const Vec3d start = w0 - w0.dot(d0) * d0;
   if (!(start.norm() > kParallelTol * w0.norm())) return Status::invalid_argument;
   const Vec3d u0 = start.normalized();
-  // Step doubling: the tables with m and 2m steps per interval differ by
-  // ~15 times the error of the finer one (both methods are of order 4).
-  static_assert(kRmfMaxSubsteps >= 1, "");
-  Vec3d coarse[kRmfIntervals + 1], fine[kRmfIntervals + 1];
-  auto table = [&](int m, Vec3d* w) {
-    return method == RmfMethod::reference ? rk4_table(spine, u0, m, w)
-                                          : reflection_table(spine, u0, m, w);
-  };
-  if (!table(1, coarse)) return Status::numerical_overflow;
-  for (int m = 2; m <= kRmfMaxSubsteps; m *= 2) {
-    if (!table(m, fine)) return Status::numerical_overflow;
-    double diff = 0;
-    for (int k = 0; k <= kRmfIntervals; ++k) diff = std::max(diff, (fine[k] - coarse[k]).norm());
-    const double estimate = diff / 15.0;
-    if (estimate <= tolerance) {
-      // The reference extrapolates (Richardson: order 5); double
-      // reflection returns its finer table. Both are renormalized on the
-      // normal planes.
-      RmfTable& T = out;
-      for (int k = 0; k <= kRmfIntervals; ++k) {
-        const double t = double(k) / kRmfIntervals;
-        const Vec3d w = method == RmfMethod::reference
-                            ? Vec3d(fine[k] + (fine[k] - coarse[k]) / 15.0)
-                            : fine[k];
-        T.w[k] = orthonormal_to(w, spine.d1(t));
-        T.dw[k] = rmf_rate(spine, t, T.w[k]);
-        T.ddw[k] = rmf_second(spine, t, T.w[k]);
-      }
-      T.method = method;
-      T.substeps = m;
-      T.error_estimate = estimate;
-      return Status::ok;
-    }
-    std::copy(fine, fine + kRmfIntervals + 1, coarse);
-  }
-  return Status::numerical_overflow;  // the tolerance is not met
+  // Written in place: callers build into scratch objects (make_sphere_skin
+  // copies a complete skin into its output only on success).
+  out.method = method;
+  out.pieces = 0;
+  return method == RmfMethod::reference ? reference_rmf(spine, u0, tolerance, out)
+                                        : reflection_rmf(spine, u0, tolerance, out);
 }
 
 void rmf_at(const SkinSpine& spine, const RmfTable& T, double t, Vec3d& w1, Vec3d* dw1) {
-  const double pos = std::min(std::max(t, 0.0), 1.0) * kRmfIntervals;
+  t = std::min(std::max(t, 0.0), 1.0);
+  if (T.method == RmfMethod::reference) {
+    int i = 0;
+    while (i + 1 < T.pieces && t > T.piece[i].t1) ++i;
+    w1 = orthonormal_to(piece_w1(spine, T.piece[i], t), spine.d1(t));
+    if (dw1) *dw1 = rmf_rate(spine, t, w1);
+    return;
+  }
+  const double pos = t * kRmfIntervals;
   const int k = std::min(int(pos), kRmfIntervals - 1);
   const double s = pos - k, h = 1.0 / kRmfIntervals;
   // Quintic Hermite basis on [0, 1] (value, first and second derivative at
@@ -296,8 +451,6 @@ Status pairing_directions(const SkinEnd& s, const SkinEnd& f, const SkinOptions&
 Status end_scalars(const SkinSpine& a, const RmfTable& T, const SkinEnd& e, double t,
                    double& kappa, double (&coeff)[3]) {
   kappa = skin_spine_curvature(a, t);
-  if (!std::isfinite(kappa)) return Status::numerical_overflow;
-  if (!(kappa * e.radius < 1.0 - 1e-12)) return Status::curvature_radius_too_large;
   Vec3d w1;
   rmf_at(a, T, t, w1, nullptr);
   const Vec3d d1 = a.d1(t), d2 = a.d2(t), w2 = d1.normalized().cross(w1);
@@ -329,6 +482,32 @@ Status check_ends(const SkinEnd& s, const SkinEnd& f, const SkinOptions& o) {
   return Status::ok;
 }
 
+// out = S without the unused half of the RMF table (a reference skin
+// carries no double-reflection table and vice versa): ~19 KB less to copy.
+void copy_skin(const SphereSkin& S, SphereSkin& out) {
+  out.ends[0] = S.ends[0];
+  out.ends[1] = S.ends[1];
+  out.spine = S.spine;
+  out.pairing = S.pairing;
+  out.delta = S.delta;
+  for (int e = 0; e < 2; ++e) {
+    out.kappa[e] = S.kappa[e];
+    for (int k = 0; k < 3; ++k) out.a_coeff[e][k] = S.a_coeff[e][k];
+  }
+  const RmfTable& T = S.rmf;
+  RmfTable& R = out.rmf;
+  R.method = T.method;
+  R.pieces = T.pieces;
+  R.substeps = T.substeps;
+  R.error_estimate = T.error_estimate;
+  std::copy(T.piece, T.piece + T.pieces, R.piece);
+  if (T.method == RmfMethod::double_reflection) {
+    std::copy(T.w, T.w + kRmfIntervals + 1, R.w);
+    std::copy(T.dw, T.dw + kRmfIntervals + 1, R.dw);
+    std::copy(T.ddw, T.ddw + kRmfIntervals + 1, R.ddw);
+  }
+}
+
 Status build_skin(const SkinEnd& start, const SkinEnd& end, const Vec3d* w0,
                   const SkinOptions& o, SphereSkin& out) {
   if (Status st = check_ends(start, end, o); st != Status::ok) return st;
@@ -347,6 +526,14 @@ Status build_skin(const SkinEnd& start, const SkinEnd& end, const Vec3d* w0,
   S.ends[1] = end;
   S.spine = make_skin_spine(start, end);
   S.pairing = o.pairing;
+  // Validity first (it needs only the spine): ERRATA's a c > 0 for every
+  // theta iff kappa r < 1 at both ends.
+  for (int e = 0; e < 2; ++e) {
+    const double kappa = skin_spine_curvature(S.spine, double(e));
+    if (!std::isfinite(kappa)) return spine_regular(S.spine) ? Status::numerical_overflow
+                                                             : Status::zero_tangent;
+    if (!(kappa * S.ends[e].radius < 1.0 - 1e-12)) return Status::curvature_radius_too_large;
+  }
   if (Status st = transport_rmf(S.spine, u0, o.method, o.tolerance, S.rmf); st != Status::ok)
     return st;
   if (baseline) {
@@ -361,7 +548,7 @@ Status build_skin(const SkinEnd& start, const SkinEnd& end, const Vec3d* w0,
     if (Status st = end_scalars(S.spine, S.rmf, S.ends[e], double(e), S.kappa[e], S.a_coeff[e]);
         st != Status::ok)
       return st;
-  out = S;
+  copy_skin(S, out);
   return Status::ok;
 }
 
