@@ -62,6 +62,18 @@ TEST(SkinOptimizer, ShortTangentsAreLengthenedUntilValid) {
   // Directions kept, lengths scaled by the reported factors.
   EXPECT_LE((s.tangent - sum.scale[0] * E.s.tangent).norm(), 1e-12 * s.tangent.norm());
   EXPECT_LE((e.tangent - sum.scale[1] * E.e.tangent).norm(), 1e-12 * e.tangent.norm());
+  // The cones and spheres stay (the apex x = p + c t with c = 1/inv_c).
+  for (int i = 0; i < 2; ++i) {
+    const SkinEnd &in = i ? E.e : E.s, &out = i ? e : s;
+    const Vec3d x0 = in.center + in.tangent / in.inv_c, x1 = out.center + out.tangent / out.inv_c;
+    EXPECT_LE((x0 - x1).norm(), 1e-12 * x0.norm()) << i;
+    Vec3d m0, m1;
+    double R0, R1;
+    skin_end_sphere(in, m0, R0);
+    skin_end_sphere(out, m1, R1);
+    EXPECT_LE((m0 - m1).norm(), 1e-12) << i;
+    EXPECT_NEAR(R0, R1, 1e-12) << i;
+  }
   ASSERT_EQ(make_sphere_skin(s, e, SkinOptions{}, S), Status::ok);
   EXPECT_NEAR(S.kappa[0] * s.radius, sum.kappa_r[0], 1e-9);
   // The smallest change: the active end sits near the target (not far

@@ -328,6 +328,27 @@ TEST(SphereSkinPaper, EndsFromApexAndSphere) {
             Status::invalid_argument);
 }
 
+// The default tangents: chord length, same cones and spheres.
+TEST(SphereSkinPaper, ChordTangents) {
+  Skew k;
+  SkinEnd s = k.s, e = k.e;
+  skin_chord_tangents(s, e);
+  const double chord = (k.e.center - k.s.center).norm();
+  for (int i = 0; i < 2; ++i) {
+    const SkinEnd &in = i ? k.e : k.s, &out = i ? e : s;
+    EXPECT_NEAR(out.tangent.norm(), chord, 1e-14 * chord);
+    EXPECT_LE((out.tangent.normalized() - in.tangent.normalized()).norm(), 1e-15);
+    Vec3d m0, m1;
+    double R0, R1;
+    skin_end_sphere(in, m0, R0);
+    skin_end_sphere(out, m1, R1);
+    EXPECT_LE((m0 - m1).norm(), 1e-13);
+    EXPECT_NEAR(R0, R1, 1e-13);
+  }
+  SphereSkin S;
+  EXPECT_EQ(make_sphere_skin(s, e, SkinOptions{}, S), Status::ok);
+}
+
 // The degenerate inputs of the issue: statuses, nothing written.
 TEST(SphereSkinPaper, DegenerateInputs) {
   Skew k;

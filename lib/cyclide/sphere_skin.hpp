@@ -64,6 +64,11 @@ Status skin_end_from_sphere(const Vec3d& sphere_center, double sphere_radius,
 // The sphere of an end.
 void skin_end_sphere(const SkinEnd& e, Vec3d& center, double& radius);
 
+// The default tangent lengths: both |p_f - p_i| (the chord), directions,
+// cones and spheres kept (1/c scales with the tangent). Ends with a zero
+// tangent or coincident centers are left as they are.
+void skin_chord_tangents(SkinEnd& start, SkinEnd& end);
+
 // The cubic Hermite spine in power form: alpha(t) = c[0] + c[1] t + c[2] t^2
 // + c[3] t^3 on [0, 1].
 struct SkinSpine {

@@ -90,9 +90,12 @@ Status optimize_skin_tangents(const SkinEnd& start, const SkinEnd& end, const Sk
   so.parameter_tolerance = 1e-12;
   ceres::Solver::Summary cs;
   ceres::Solve(so, &problem, &cs);
+  // The cones stay: c t = x - p is fixed, so 1/c scales with the tangent.
   SkinEnd s = start, e = end;
   s.tangent *= std::exp(x[0]);
+  s.inv_c *= std::exp(x[0]);
   e.tangent *= std::exp(x[1]);
+  e.inv_c *= std::exp(x[1]);
   if (const Status st = make_sphere_skin(s, e, skin, S); st != Status::ok)
     return st == Status::curvature_radius_too_large ? st : Status::curvature_radius_too_large;
   R.scale[0] = std::exp(x[0]);

@@ -29,7 +29,8 @@ struct SkinTangentSummary {
 // target - 1)^2 + hinge(kappa(1) r_f / target - 1)^2) over log sigma in
 // [log min_ratio, log max_ratio] (Remark 2's closed-form curvatures with
 // Jets): the smallest change of the tangent lengths that makes the ends
-// valid, directions kept. Statuses: those of make_sphere_skin other than
+// valid, directions and cones kept (1/c scales with the tangent, so the
+// apex x = p + c t and the sphere stay). Statuses: those of make_sphere_skin other than
 // curvature_radius_too_large (nothing to fix), invalid_argument (target
 // outside (0, 1), ratios not 0 < min <= 1 <= max, max_iterations < 0),
 // not_finite; curvature_radius_too_large if no scaling in the box makes

@@ -72,6 +72,18 @@ void skin_end_sphere(const SkinEnd& e, Vec3d& center, double& radius) {
   radius = std::sqrt(e.radius * e.radius + h * h);
 }
 
+void skin_chord_tangents(SkinEnd& start, SkinEnd& end) {
+  const double chord = (end.center - start.center).norm();
+  if (!(chord > 0) || !std::isfinite(chord)) return;
+  for (SkinEnd* e : {&start, &end}) {
+    const double len = e->tangent.norm();
+    if (!(len > 0) || !std::isfinite(len)) continue;
+    const double k = chord / len;
+    e->tangent *= k;
+    e->inv_c *= k;
+  }
+}
+
 SkinSpine make_skin_spine(const SkinEnd& start, const SkinEnd& end) {
   // Cubic Hermite alpha(0) = p_i, alpha(1) = p_f, alpha' = t_i, t_f.
   const Vec3d &p0 = start.center, &p1 = end.center, &t0 = start.tangent, &t1 = end.tangent;
