@@ -198,11 +198,17 @@ Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double*
                  double* x_t, double* normal);
 // The grid theta[i] x t[j] (ntheta values of theta, nt of t), row-major by
 // t (index j * ntheta + i), 3 doubles per output point; x or normal may be
-// null. The arguments are validated before anything is written; normals
+// null. The arguments (and for skins beyond 1e50, every point's finiteness:
+// numerical_overflow) are validated before anything is written; normals
 // at singular points are written as (0, 0, 0) and counted in *singular
 // (may be null), as the circle-family grids do.
 Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, const double* t,
                       int nt, double* x, double* normal, std::size_t* singular = nullptr);
+
+// The largest magnitude among the spine's coefficients, the radii and
+// a r (lambda's slopes): beyond 1e50 the grid validates every point
+// before writing (evaluation may overflow: numerical_overflow).
+double skin_magnitude(const SphereSkin& S);
 
 // lambda(t; theta) and the end scalars a_i(theta), a_f(theta) (eqs. (9),
 // (11)).

@@ -537,6 +537,11 @@ Status build_skin(const SkinEnd& start, const SkinEnd& end, const Vec3d* w0,
   S.ends[0] = start;
   S.ends[1] = end;
   S.spine = make_skin_spine(start, end);
+  // Valid ends (<= 1e100) can give a spine beyond the input range (3 (p_f -
+  // p_i) - 2 t_i - t_f): an overflow, not a non-finite input (which
+  // transport_rmf would report for its own argument).
+  for (const Vec3d& c : S.spine.c)
+    if (!input_ok(c)) return Status::numerical_overflow;
   S.pairing = o.pairing;
   // Validity first (it needs only the spine): ERRATA's a c > 0 for every
   // theta iff kappa r < 1 at both ends.
@@ -673,6 +678,16 @@ void put(const Vec3d& v, double* out) {
 
 }  // namespace
 
+double skin_magnitude(const SphereSkin& S) {
+  double m = 0;
+  for (const Vec3d& c : S.spine.c) m = std::max(m, c.lpNorm<Eigen::Infinity>());
+  for (int e = 0; e < 2; ++e) {
+    m = std::max(m, S.ends[e].radius);
+    for (double a : S.a_coeff[e]) m = std::max(m, std::abs(a) * S.ends[e].radius);
+  }
+  return std::isfinite(m) ? m : HUGE_VAL;
+}
+
 double skin_lambda(const SphereSkin& S, double theta, double t, double* a) {
   const SkinColumn c = column(S, t);
   const ThetaTrig g = theta_trig(S, theta);
@@ -714,6 +729,18 @@ Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, cons
   // of 64 on the stack), the spine and RMF once per t.
   constexpr int kBlock = 64;
   ThetaTrig g[kBlock];
+  // Skins beyond 1e50 may overflow in evaluation: then every point is
+  // evaluated first as skin_eval checks it (numerical_overflow before
+  // anything is written); below, no product of the formulas can.
+  if (skin_magnitude(S) > 1e50)
+    for (int j = 0; j < nt; ++j) {
+      const SkinColumn c = column(S, t[j]);
+      for (int i = 0; i < ntheta; ++i) {
+        const SkinPoint p = point(S, c, theta_trig(S, theta[i]));
+        if (!input_ok(p.x) || !input_ok(p.xt) || !input_ok(p.xth))
+          return Status::numerical_overflow;
+      }
+    }
   std::size_t bad = 0;
   for (int i0 = 0; i0 < ntheta; i0 += kBlock) {
     const int m = std::min(kBlock, ntheta - i0);
