@@ -138,6 +138,10 @@ inline const char* explain(Status s) {
              "planar Hermite data vanish at an end)";
     case Status::intersecting_circles:
       return "two joining circles on the auxiliary sphere intersect (choose other lambdas)";
+    case Status::nested_spheres:
+      return "one sphere lies inside (or equals) the other: no skin joins them (seed 002)";
+    case Status::curvature_radius_too_large:
+      return "kappa r >= 1 at an end: the skin would fold there (seed 002 Remark 2)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -168,7 +168,8 @@ Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double*
                  double* x_t, double* normal);
 // The grid theta[i] x t[j] (nt values of theta, nu of t), row-major by t
 // (index j * ntheta + i), 3 doubles per output point. all-or-nothing: on
-// a singular point singular_point is returned (with *bad = the index).
+// a singular point singular_point is returned, on values beyond the range
+// numerical_overflow, as skin_eval at that point (with *bad = the index).
 Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, const double* t,
                       int nt, double* x, double* normal, int* bad = nullptr);
 

@@ -346,6 +346,11 @@ Status build_skin(const SkinEnd& start, const SkinEnd& end, const Vec3d* w0,
   S.ends[0] = start;
   S.ends[1] = end;
   S.spine = make_skin_spine(start, end);
+  // Valid ends (<= 1e100) can give a spine beyond the input range (3 (p_f -
+  // p_i) - 2 t_i - t_f): an overflow, not a non-finite input (which
+  // transport_rmf would report for its own argument).
+  for (const Vec3d& c : S.spine.c)
+    if (!input_ok(c)) return Status::numerical_overflow;
   S.pairing = o.pairing;
   if (Status st = transport_rmf(S.spine, u0, o.method, o.tolerance, S.rmf); st != Status::ok)
     return st;
@@ -495,9 +500,10 @@ Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, cons
     if (!std::isfinite(t[j])) return Status::not_finite;
     if (!(t[j] >= 0.0 && t[j] <= 1.0)) return Status::bad_domain;
   }
-  // Two passes keep the outputs all-or-nothing: the normals are checked
-  // first only when asked for (a singular point is the only failure).
-  for (int pass = normal ? 0 : 1; pass < 2; ++pass)
+  // Two passes keep the outputs all-or-nothing: every point is checked
+  // first as skin_eval checks it (a singular point where normals are asked
+  // for, then values beyond the range: a grid fails where skin_eval fails).
+  for (int pass = 0; pass < 2; ++pass)
     for (int j = 0; j < nt; ++j) {
       const SkinColumn c = column(S, t[j]);
       for (int i = 0; i < ntheta; ++i) {
@@ -508,7 +514,13 @@ Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, cons
           if (bad) *bad = int(k);
           return Status::singular_point;
         }
-        if (pass == 0) continue;
+        if (pass == 0) {
+          if (!input_ok(p.x) || !input_ok(p.xt) || !input_ok(p.xth)) {
+            if (bad) *bad = int(k);
+            return Status::numerical_overflow;
+          }
+          continue;
+        }
         if (x) put(p.x, x + 3 * k);
         if (normal) put(n, normal + 3 * k);
       }
