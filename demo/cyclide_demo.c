@@ -779,6 +779,133 @@ static void nway_demo(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_surface_destroy(ctx, sphere);
 }
 
+/* ---- Seed 002: sphere skins by rotation-minimizing transport. */
+
+/* The skin's patch as an NU x NV mesh (t along, theta around), and the
+ * largest distance of its t = 0 and t = 1 points from the end circles. */
+static double write_skin(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
+                         const cyc_skin_end* ends, const char* dir, const char* name,
+                         FILE* report) {
+  static double th[NV], ts[NU], pts[NU * NV * 3], nrm[NU * NV * 3];
+  double worst = 0;
+  int i, k, e;
+  size_t singular = 0;
+  for (i = 0; i < NV; ++i) th[i] = 2 * PI * i / NV;
+  for (i = 0; i < NU; ++i) ts[i] = (double)i / (NU - 1);
+  check(ctx, cyc_sphere_skin_eval_grid(ctx, skin, patch, th, NV, ts, NU, pts, nrm, &singular),
+        "cyc_sphere_skin_eval_grid");
+  for (e = 0; e < 2; ++e)
+    for (i = 0; i < NV; ++i) {
+      const double* q = pts + 3 * ((e ? NU - 1 : 0) * NV + i);
+      double d2 = 0;
+      for (k = 0; k < 3; ++k) d2 += (q[k] - ends[e].center[k]) * (q[k] - ends[e].center[k]);
+      worst = fmax(worst, fabs(sqrt(d2) - ends[e].radius));
+    }
+  write_mesh(dir, name, pts, nrm, report);
+  if (singular) fprintf(report, "  %zu singular normals\n", singular);
+  return worst;
+}
+
+static void skin_sphere(const cyc_skin_end* e, const char* dir, const char* name, FILE* report) {
+  double m[3], R;
+  cyc_skin_end_sphere(e, m, &R);
+  write_sphere(dir, name, m, R, report);
+}
+
+static void skin_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  const double m0[3] = {0, 0, 0}, p0[3] = {0.3, 0, 0}, t0[3] = {3, 0, 0};
+  const double m1[3] = {4, 1, 0.5}, a1[3] = {0.7682212795973759, 0.4609327677584255,
+                                            0.4445};
+  double p1[3], t1[3], n1 = 0, twist[3] = {0, 0, 0};
+  const char* names[3] = {"rmf", "kunkli_hoffmann", "cross_tangents"};
+  cyc_skin_end ends[2], chain[5];
+  cyc_skin_options o;
+  cyc_sphere_skin* skin;
+  cyc_sphere_skin_info info;
+  clock_t c0;
+  int k, pairing, n = 0, bad = -1;
+  fprintf(report, "\nseed 002: skins of spheres by rotation-minimizing surfaces\n");
+  for (k = 0; k < 3; ++k) n1 += a1[k] * a1[k];
+  for (k = 0; k < 3; ++k) {
+    p1[k] = m1[k] - 0.4 * a1[k] / sqrt(n1);
+    t1[k] = 3.0 * a1[k] / sqrt(n1);
+  }
+  check(ctx, cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &ends[0]), "skin end");
+  check(ctx, cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &ends[1]), "skin end");
+  skin_sphere(&ends[0], dir, "skin_sphere0", report);
+  skin_sphere(&ends[1], dir, "skin_sphere1", report);
+  for (pairing = 0; pairing < 3; ++pairing) {
+    char name[64];
+    double gap;
+    cyc_skin_options_init(&o);
+    o.pairing = pairing;
+    c0 = clock();
+    for (k = 0; k < 1000; ++k) {
+      if (cyc_sphere_skin_create(ctx, &ends[0], &ends[1], &o, &skin) != CYC_OK) break;
+      if (k < 999) cyc_sphere_skin_destroy(ctx, skin);
+    }
+    if (k < 1000) check(ctx, cyc_context_last_status(ctx), "cyc_sphere_skin_create");
+    check(ctx, cyc_sphere_skin_info_get(ctx, skin, 0, &info), "cyc_sphere_skin_info_get");
+    check(ctx, cyc_sphere_skin_twist(ctx, skin, 0, 0.7, &twist[pairing]), "cyc_sphere_skin_twist");
+    snprintf(name, sizeof name, "skin_%s", names[pairing]);
+    gap = write_skin(ctx, skin, 0, ends, dir, name, report);
+    fprintf(report,
+            "  %s pairing: %.1f us per skin (paper: seconds), kappa r = %.3f, %.3f (< 1), "
+            "RMF error estimate %.1e, end points off their circles %.1e, twist vs RMF %.4f rad "
+            "(delta %.4f)\n",
+            names[pairing], (double)(clock() - c0) / CLOCKS_PER_SEC * 1e3,
+            info.kappa[0] * ends[0].radius, info.kappa[1] * ends[1].radius,
+            info.rmf_error_estimate, gap, twist[pairing], info.delta);
+    cyc_sphere_skin_destroy(ctx, skin);
+  }
+  fprintf(report, "  the RMF skin twists %.1e rad, Kunkli-Hoffmann %.3f, t_i x t_f %.3f\n",
+          twist[0], twist[1], twist[2]);
+  /* A chain of five spheres on a helix. */
+  for (k = 0; k < 5; ++k) {
+    const double a = 0.9 * k;
+    const double m[3] = {3 * cos(a), 3 * sin(a), 1.5 * k};
+    double d[3] = {-3 * sin(a), 3 * cos(a), 1.5}, p[3], len = 0;
+    int j;
+    for (j = 0; j < 3; ++j) len += d[j] * d[j];
+    len = sqrt(len);
+    for (j = 0; j < 3; ++j) {
+      d[j] *= 2.8 / len;
+      p[j] = m[j] - 0.15 * (k % 2 ? 1 : -1) * d[j] / 2.8;
+    }
+    check(ctx, cyc_skin_end_from_sphere(ctx, m, 0.7 + 0.25 * (k % 3), p, d, &chain[k]),
+          "chain end");
+  }
+  cyc_skin_options_init(&o);
+  check(ctx, cyc_sphere_skin_chain_create(ctx, chain, 5, &o, &skin, &bad),
+        "cyc_sphere_skin_chain_create");
+  check(ctx, cyc_sphere_skin_patch_count(ctx, skin, &n), "patch count");
+  for (k = 0; k < n; ++k) {
+    char name[64];
+    snprintf(name, sizeof name, "skin_chain_patch%d", k);
+    write_skin(ctx, skin, k, chain + k, dir, name, report);
+  }
+  for (k = 0; k < 5; ++k) {
+    char name[64];
+    snprintf(name, sizeof name, "skin_chain_sphere%d", k);
+    skin_sphere(&chain[k], dir, name, report);
+  }
+  {
+    /* G1 at the shared circles: the normals of both patches there. */
+    double worst = 0, x0[3], x1[3], a[3], b[3];
+    int j, i;
+    for (k = 0; k + 1 < n; ++k)
+      for (i = 0; i < 24; ++i) {
+        const double th = 2 * PI * i / 24;
+        check(ctx, cyc_sphere_skin_eval(ctx, skin, k, th, 1.0, x0, NULL, NULL, a), "eval");
+        check(ctx, cyc_sphere_skin_eval(ctx, skin, k + 1, th, 0.0, x1, NULL, NULL, b), "eval");
+        for (j = 0; j < 3; ++j) worst = fmax(worst, fabs(a[j] - b[j]) + fabs(x0[j] - x1[j]));
+      }
+    fprintf(report, "  chain of 5 spheres: %d patches, G1 at the shared circles to %.1e\n", n,
+            worst);
+  }
+  cyc_sphere_skin_destroy(ctx, skin);
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -873,6 +1000,7 @@ int main(int argc, char** argv) {
   ringed_dnr_demos(ctx, dir, report);
   nway_demo(ctx, dir, report);
   sqrt_and_implicit_demos(ctx, dir, report);
+  skin_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

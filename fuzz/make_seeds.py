@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/,
-fuzz_lines/, fuzz_blend/, fuzz_ringed/ and fuzz_implicit/.
+fuzz_lines/, fuzz_blend/, fuzz_ringed/, fuzz_implicit/ and fuzz_skin/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -2246,6 +2246,350 @@ def implicit_seeds():
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_skin
+
+class SkinEncoder(Encoder):
+    """Mirrors fuzz_skin.cpp: the allocator mode, the handler flag, the ops
+    (op() splices their number in), then the teardown order. The harness
+    tracks how many skins exist: pick(i) means skins[i % count]."""
+
+    OPS = {"create": 0, "chain": 1, "eval": 2, "grid": 3, "twist": 4, "lambda": 5,
+           "info": 6, "destroy": 7, "nulls": 8}
+
+    def __init__(self, alloc_mode=1, fail_at=0, fail_after=False, handler=True):
+        super().__init__()
+        self.range(0, 2, alloc_mode)
+        if alloc_mode == 2:
+            self.range(0, 15, fail_at)
+            self.flag(fail_after)
+        self.flag(handler)
+        self.nops_at = len(self.consumed)
+        self.nops = 0
+
+    def finish(self, context_first=False):
+        body = self.consumed[self.nops_at:]
+        self.consumed = self.consumed[:self.nops_at]
+        assert 1 <= self.nops <= 12
+        self.range(1, 12, self.nops)
+        self.consumed.extend(body)
+        self.flag(context_first)
+        return self.data()
+
+    def op(self, name):
+        self.nops += 1
+        self.range(0, 8, self.OPS[name])
+
+    def values(self, vs, style):
+        self.fill(vs, style)
+
+    # make_end: ("good", m, R16, d, L4, frac16) | ("raw", style, p, r, t, inv_c)
+    # | ("apex", style, p, r, t, c_or_point, nulls) | ("sphere", style, p, R, t,
+    # c_or_point, nulls): for apex the apex is p + c t, for sphere the sphere's
+    # center is p - c t (a tuple instead of c: the point itself).
+    def end(self, spec):
+        kind = spec[0]
+        if kind == "good":
+            _, m, R16, d, L4, frac16 = spec
+            self.range(0, 3, 3)
+            self.values(m, 1)
+            self.range(1, 64, R16)
+            self.values(d, 1)
+            self.range(1, 40, L4)
+            self.range(-15, 15, frac16)
+            return
+        self.range(0, 3, {"raw": 0, "apex": 1, "sphere": 2}[kind])
+        _, style, p, r, t, rest = spec[0], spec[1], spec[2], spec[3], spec[4], spec[5:]
+        self.range(0, 2, style)
+        inv_c = rest[0] if kind == "raw" else 0.0
+        self.values(list(p) + [r] + list(t) + [inv_c], style)
+        if kind == "raw":
+            return
+        c, nulls = rest[0], rest[1] if len(rest) > 1 else None
+        if isinstance(c, tuple):
+            self.flag(True)
+            self.values(c, style)
+        else:
+            self.flag(False)
+            self.values([c], style)
+        self.rarely(nulls is not None)
+        if nulls is not None:
+            self.range(0, 3, nulls)
+
+    # options: None (NULL), "default", (pairing, method) (mode 3) or a dict
+    # for mode 2: pairing, method (ints; "min"/"max" for INT_MIN/INT_MAX),
+    # tol ("default", exponent 6..14, "zero", ("wild", v), "tiny", "nan"),
+    # reference / e: (style, values).
+    def options(self, o):
+        if o is None:
+            self.range(0, 3, 0)
+        elif o == "default":
+            self.range(0, 3, 1)
+        elif isinstance(o, tuple):
+            self.range(0, 3, 3)
+            self.range(0, 2, o[0])
+            self.range(0, 1, o[1])
+        else:
+            self.range(0, 3, 2)
+            for key, lo, hi, nmodes in (("pairing", -1, 3, 5), ("method", -1, 2, 4)):
+                v = o.get(key, 0)
+                if v in ("min", "max"):
+                    self.range(0, nmodes, 1)
+                    self.flag(v == "min")
+                elif 0 <= v <= hi - 1:
+                    self.range(0, nmodes, 2)
+                    self.range(0, hi - 1, v)
+                else:
+                    self.range(0, nmodes, 0)
+                    self.range(lo, hi, v)
+            tol = o.get("tol", "default")
+            if tol == "default":
+                self.range(0, 5, 0)
+            elif isinstance(tol, int):
+                self.range(0, 5, 1)
+                self.range(6, 14, tol)
+            elif tol == "zero":
+                self.range(0, 5, 2)
+            elif isinstance(tol, tuple):
+                self.range(0, 5, 3)
+                self.wild_any(tol[1])
+            elif tol == "tiny":
+                self.range(0, 5, 4)
+            else:
+                self.range(0, 5, 5)
+            for key in ("reference", "e"):
+                v = o.get(key)
+                self.flag(v is not None)
+                if v is not None:
+                    self.range(0, 2, v[0])
+                    self.values(v[1], v[0])
+
+    def wild_any(self, v):
+        self.wild(v)
+
+    def create(self, a, b, o=None, nulls=None):
+        self.op("create")
+        self.end(a)
+        self.end(b)
+        self.options(o)
+        self.rarely(nulls is not None)
+        if nulls is not None:
+            self.range(0, 2, nulls)
+
+    def chain(self, ends, n=None, o=None, null_ends=False, null_out=False, with_bad=True):
+        self.op("chain")
+        self.range(-1, 6, len(ends) if n is None else n)
+        for e in ends:
+            self.end(e)
+        self.options(o)
+        self.rarely(null_ends)
+        self.rarely(null_out)
+        self.flag(with_bad)
+
+    def pick(self, i):
+        self.range(0, 7, i)
+
+    def patch(self, p):
+        self.range(-2, 8, {"min": -2, "max": 8}.get(p, p))
+
+    # theta: a number (moderate), ("wild", v), ("pi8", k), or 0 (mode 3)
+    def theta(self, v):
+        if isinstance(v, tuple) and v[0] == "wild":
+            self.range(0, 3, 1)
+            self.wild(v[1])
+        elif isinstance(v, tuple):
+            self.range(0, 3, 2)
+            self.range(-16, 16, v[1])
+        elif v == 0:
+            self.range(0, 3, 3)
+        else:
+            self.range(0, 3, 0)
+            self.moderate(v)
+
+    # t: k/16 as ("16", k), 0.0 / 1.0 (mode 1), a moderate number, ("wild",
+    # v), "above1" / "below0"
+    def t(self, v):
+        if isinstance(v, tuple) and v[0] == "16":
+            self.range(0, 4, 0)
+            self.range(0, 16, v[1])
+        elif isinstance(v, tuple):
+            self.range(0, 4, 3)
+            self.wild(v[1])
+        elif v in ("above1", "below0"):
+            self.range(0, 4, 4)
+            self.flag(v == "above1")
+        elif v in (0.0, 1.0):
+            self.range(0, 4, 1)
+            self.flag(v == 1.0)
+        else:
+            self.range(0, 4, 2)
+            self.moderate(v)
+
+    def eval(self, i, patch, theta, t, mask=15):
+        self.op("eval")
+        self.pick(i)
+        self.patch(patch)
+        self.theta(theta)
+        self.t(t)
+        self.range(0, 15, mask)
+
+    def grid(self, i, patch, thetas, ts, mask=3, null_theta=False, null_t=False, nth=None,
+             nt=None):
+        self.op("grid")
+        self.pick(i)
+        self.patch(patch)
+        self.range(-1, 6, len(thetas) if nth is None else nth)
+        self.range(-1, 6, len(ts) if nt is None else nt)
+        for v in thetas:
+            self.theta(v)
+        for v in ts:
+            self.t(v)
+        self.range(0, 3, mask)
+        self.rarely(null_theta)
+        self.rarely(null_t)
+
+    def twist(self, i, patch, theta, null_out=False):
+        self.op("twist")
+        self.pick(i)
+        self.patch(patch)
+        self.theta(theta)
+        self.rarely(null_out)
+
+    def lam(self, i, patch, theta, t, with_a=True, null_out=False):
+        self.op("lambda")
+        self.pick(i)
+        self.patch(patch)
+        self.theta(theta)
+        self.t(t)
+        self.flag(with_a)
+        self.rarely(null_out)
+
+    def info(self, i, patch, null_out=False):
+        self.op("info")
+        self.pick(i)
+        self.patch(patch)
+        self.rarely(null_out)
+
+    def destroy(self, i):
+        self.op("destroy")
+        self.range(0, 7, i)
+
+    def nulls(self):
+        self.op("nulls")
+
+
+def skin_seeds():
+    seeds = {}
+    # Two spheres with skew axes (dyadic, as tests/sphere_skin_test.cpp's
+    # Skew): unit sphere at 0, circle at x = 3/8, tangent (3, 0, 0); unit
+    # sphere at (4, 1, 1/2) with tangent (3, 3/2, 3/2), circle at -1/8 t.
+    A = ("sphere", 1, (0.375, 0, 0), 1, (3, 0, 0), 0.125)
+    B = ("sphere", 1, (3.625, 0.8125, 0.3125), 1, (3, 1.5, 1.5), -0.125)
+    e = SkinEncoder()
+    e.create(A, B)
+    e.eval(0, 0, ("pi8", 3), 0.0)
+    e.eval(0, 0, 0.5, 1.0)
+    e.eval(0, 0, -2.25, ("16", 7), mask=9)
+    e.grid(0, 0, [0, ("pi8", 4), -1.5], [0.0, ("16", 5), 1.0])
+    e.lam(0, 0, 1.25, 1.0)
+    e.twist(0, 0, 0.75)
+    e.info(0, 0)
+    e.create(A, B, (1, 0))
+    e.twist(1, 0, 0.75)
+    e.create(A, B, (2, 1))
+    e.info(2, 0)
+    seeds["seed-skew"] = e.finish()
+
+    # A chain of three spheres (tests/sphere_skin_test.cpp's chain, dyadic).
+    ends = [("good", (0, 0, 0), 16, (1, 0, 0), 12, -5),
+            ("good", (4, 1, 0), 13, (1, 0.5, 0.3), 12, 2),
+            ("good", (6, 4, -1), 18, (0.25, 1, -0.375), 12, 5)]
+    e = SkinEncoder(handler=False)
+    e.chain(ends)
+    e.eval(0, 0, 0.5, 1.0)
+    e.eval(0, 1, 0.5, 0.0)
+    e.grid(0, 1, [0, 1.5, -3], [0.0, ("16", 8)], mask=3)
+    e.info(0, 1)
+    e.lam(0, 1, 0, 0.0)
+    e.chain(ends + [("good", (7, 8, -2), 16, (0.25, 1, -0.25), 12, 4)],
+            o={"pairing": 1, "method": 1, "tol": 10})
+    e.eval(1, 2, ("pi8", -5), ("16", 11))
+    e.destroy(0)
+    e.twist(0, 1, 2.5)
+    seeds["seed-chain"] = e.finish(context_first=True)
+
+    # The documented errors: nested and equal spheres, kappa r >= 1 (a short
+    # tangent), parallel tangents for cross tangents, bad enums, tolerances
+    # 0 / NaN / 1e-300, chains with n = -1, 1, NULLs; evaluation with a bad
+    # patch, NaN, outside [0, 1].
+    short = ("sphere", 1, (3.625, 0.8125, 0.3125), 1, (0.125, 0.0625, 0.0625), -3.0)
+    e = SkinEncoder()
+    e.create(A, A)
+    e.create(A, short)
+    e.create(A, ("sphere", 1, (3.625, 0, 0), 1, (3, 0, 0), -0.125), (2, 0))
+    e.create(A, B, {"pairing": 3, "method": 0})
+    e.create(A, B, {"pairing": "max", "method": -1})
+    e.create(A, B, {"tol": "zero"})
+    e.create(A, B, {"tol": "nan", "reference": (1, (0, 1, 0))})
+    e.create(A, B, {"tol": "tiny"})
+    e.chain([A], n=1)
+    e.chain([], n=-1)
+    e.chain([A, B, A])
+    e.nulls()
+    seeds["seed-errors"] = e.finish()
+
+    e = SkinEncoder()
+    e.create(A, B)
+    e.eval(0, 1, 0.5, 0.5)
+    e.eval(0, "min", 0.5, 0.5)
+    e.eval(0, 0, ("wild", NAN), 0.5)
+    e.eval(0, 0, 0.5, ("wild", INF))
+    e.eval(0, 0, 0.5, "above1")
+    e.grid(0, 0, [0.5, ("wild", 1e300)], [("16", 3), ("wild", 2.0)], mask=2)
+    e.grid(0, 0, [], [0.5], nth=-1)
+    e.lam(0, 0, 0.5, 0.5, null_out=True)
+    e.twist(0, 0, ("wild", -INF))
+    e.info(0, "max")
+    seeds["seed-eval-errors"] = e.finish()
+
+    # Hostile numbers: NaN, Inf, 1e300, denormals, zero radius and tangent,
+    # ends from an apex at the center or off the axis, wild tolerances.
+    e = SkinEncoder()
+    e.create(("raw", 0, (1e300, 0, 0), 1, (1, 0, 0), 0.5),
+             ("raw", 0, (0, 5e-324, 0), 0.0, (0, 0, 0), NAN))
+    e.create(("apex", 1, (0, 0, 0), 1, (1, 0, 0), 0.0),
+             ("apex", 1, (4, 0, 0), 1, (1, 0, 0), (5, 1, 0)))
+    e.create(("apex", 0, (0, 0, 0), 1e100, (1, 0, 0), 1e100),
+             ("sphere", 0, (4, 0, 0), INF, (1, 0, 0), 0.5))
+    e.create(("raw", 1, (0, 0, 0), 1, (2, 0, 0), -0.5),
+             ("raw", 1, (6, 0, 0), 1, (2, 0, 0), 0.5),
+             {"tol": ("wild", 1e-320), "method": 1, "e": (0, (NAN, 0, 0))})
+    e.create(("raw", 0, (1e99, 1e99, 0), 1, (1e99, 0, 0), 0.0),
+             ("raw", 0, (-1e99, -1e99, 0), 1, (-1e99, 0, 0), 0.0))
+    e.chain([("apex", 1, (0, 0, 0), 1, (1, 0, 0), 4.0, 2),
+             ("raw", 1, (4, 0, 0), 1, (1, 0, 0), 0.0)])
+    seeds["seed-hostile"] = e.finish()
+
+    # The grid returned OK with points beyond 1e100 where cyc_sphere_skin_eval
+    # says CYC_E_NUMERICAL_OVERFLOW (fixed: the grid checks as eval does).
+    e = SkinEncoder()
+    e.create(("raw", 0, (0, 0, 0), 1e100, (1e100, 0, 0), 0.0),
+             ("raw", 0, (1e100, 0, 0), 1e100, (1e100, 0, 0), 0.0))
+    e.grid(0, 0, [0, 1.0], [0.0, 1.0], mask=1)
+    e.grid(0, 0, [0, 1.0], [("16", 8), 1.0], mask=3)
+    e.eval(0, 0, 0, 1.0, mask=1)
+    e.lam(0, 0, 0, 1.0)
+    seeds["seed-regress-grid-overflow"] = e.finish()
+
+    # Allocation failures while creating skins and chains.
+    for k in (1, 2, 3):
+        e = SkinEncoder(alloc_mode=2, fail_at=k, fail_after=(k == 3))
+        e.create(A, B)
+        e.chain(ends)
+        e.eval(0, 0, 0.5, 0.5)
+        seeds["seed-alloc-fail-%d" % k] = e.finish()
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -2292,4 +2636,5 @@ if __name__ == "__main__":
     write("fuzz_blend", blend_seeds())
     write("fuzz_ringed", ringed_seeds())
     write("fuzz_implicit", implicit_seeds())
+    write("fuzz_skin", skin_seeds())
     write_dictionary()

@@ -732,3 +732,46 @@ TEST(AllocFreeCore, SphereSkin) {
   EXPECT_EQ(h.allocations, 0);
   EXPECT_EQ(h.frees, 0);
 }
+
+// Seed 002's sphere skins: creation allocates (the handle), evaluation,
+// grids, twist, lambda and info do not, nor do their errors.
+TEST(AllocFreeSkin, EvalGridTwistLambdaInfo) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  cyc_skin_end ends[3];
+  const double m0[3] = {0, 0, 0}, p0[3] = {0.3, 0, 0}, t0[3] = {3, 0, 0};
+  const double m1[3] = {4, 1, 0.5}, p1[3] = {3.7, 1, 0.5}, t1[3] = {3, 0, 0};
+  const double m2[3] = {8, 2, 0}, p2[3] = {7.7, 2, 0}, t2[3] = {3, 0, 0};
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &ends[0]), CYC_OK);
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &ends[1]), CYC_OK);
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m2, 0.9, p2, t2, &ends[2]), CYC_OK);
+  cyc_sphere_skin* h = nullptr;
+  ASSERT_EQ(cyc_sphere_skin_chain_create(ctx, ends, 3, nullptr, &h, nullptr), CYC_OK)
+      << cyc_context_last_error(ctx);
+  double th[16], ts[16];
+  for (int i = 0; i < 16; ++i) th[i] = -3 + 0.4 * i, ts[i] = i / 15.0;
+  std::vector<double> P(3 * 256), N(3 * 256);
+  double x[3], xa[3], xb[3], n[3], tw = 0, lam = 0, a[2];
+  cyc_sphere_skin_info I;
+  cyc_skin_end e;
+  int bad = 0, count = 0;
+  const Heap heap = measure([&] {
+    for (int r = 0; r < 3; ++r) {
+      bad += cyc_sphere_skin_eval(ctx, h, r % 2, th[r], ts[r + 3], x, xa, xb, n) != CYC_OK;
+      bad += cyc_sphere_skin_eval_grid(ctx, h, r % 2, th, 16, ts, 16, P.data(), N.data(), nullptr) != CYC_OK;
+      bad += cyc_sphere_skin_twist(ctx, h, r % 2, th[r], &tw) != CYC_OK;
+      bad += cyc_sphere_skin_lambda(ctx, h, r % 2, th[r], ts[r], &lam, a) != CYC_OK;
+      bad += cyc_sphere_skin_info_get(ctx, h, r % 2, &I) != CYC_OK;
+      bad += cyc_sphere_skin_patch_count(ctx, h, &count) != CYC_OK;
+      bad += cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &e) != CYC_OK;
+      bad += cyc_sphere_skin_eval(ctx, h, 2, 0, 0, x, xa, xb, n) != CYC_E_INVALID_ARGUMENT;
+      bad += cyc_sphere_skin_eval(ctx, h, 0, 0, 2, x, xa, xb, n) != CYC_E_BAD_DOMAIN;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(count, 2);
+  EXPECT_EQ(heap.allocations, 0);
+  EXPECT_EQ(heap.frees, 0);
+  cyc_sphere_skin_destroy(ctx, h);
+  cyc_context_destroy(ctx);
+}

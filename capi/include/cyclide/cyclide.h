@@ -1255,6 +1255,182 @@ CYC_API int cyc_optimize_implicit_blend(cyc_context* ctx, const cyc_implicit_ble
                                         cyc_surface** pieces, int* count,
                                         cyc_implicit_approx_report* report);
 
+/* ------------------------------------------- Seed 002: sphere skins */
+/* The skin of two spheres (Hoffmann, Monterde, Troll 2015, with ERRATA.md
+ * §002; SPEC.md §9): a surface s(theta, t) = alpha(t) + lambda(t; theta)
+ * w(t; theta), t in [0, 1], touching each sphere along a circle, alpha the
+ * cubic Hermite spine between the circles' centers and w the
+ * rotation-minimizing transport (RMF) of a start direction. The RMF is
+ * tabulated numerically (to options.tolerance), so the skin is not
+ * rational. Chains of spheres give several patches joined G^1. */
+
+/** One end of a skin: the circle where the skin touches a sphere and the
+ *  tangent cone along it (frozen).
+ *   center   p, the circle's center
+ *   radius   r > 0
+ *   tangent  t: the cone's axis and the spine's end tangent (its length is
+ *            the Hermite tangent length; the circle lies in the plane
+ *            through p orthogonal to t; t points along the skin, from the
+ *            start sphere towards the end sphere)
+ *   inv_c    1/c with c t = x - p, x the cone's apex; 0: a cylinder (a
+ *            great circle of its sphere)
+ *  The sphere is m = p + h t/|t|, h = -r^2 inv_c / |t|, radius
+ *  sqrt(r^2 + h^2) (cyc_skin_end_sphere). */
+typedef struct cyc_skin_end {
+  double center[3];
+  double radius;
+  double tangent[3];
+  double inv_c;
+} cyc_skin_end;
+
+/** The end with the cone's apex given (on the axis through center along
+ *  tangent). CYC_E_NOT_FINITE (an input NaN, infinite or beyond 1e100),
+ *  CYC_E_INVALID_ARGUMENT (radius <= 0, apex off the axis by more than 1e-9
+ *  relative, apex = center), CYC_E_ZERO_TANGENT (tangent = 0).
+ *  Allocation-free; nothing is written on error. */
+CYC_API int cyc_skin_end_from_apex(cyc_context* ctx, const double center[3], double radius,
+                                   const double tangent[3], const double apex[3],
+                                   cyc_skin_end* out);
+/** The end on the sphere (sphere_center, sphere_radius) at the circle with
+ *  the given center (inside the sphere, center - sphere_center parallel to
+ *  tangent to 1e-9 relative; the circle's plane is orthogonal to tangent).
+ *  CYC_E_NOT_FINITE, CYC_E_INVALID_ARGUMENT (sphere_radius <= 0, center off
+ *  the sphere's axis along tangent, the plane missing the sphere),
+ *  CYC_E_ZERO_TANGENT. Allocation-free; nothing is written on error. */
+CYC_API int cyc_skin_end_from_sphere(cyc_context* ctx, const double sphere_center[3],
+                                     double sphere_radius, const double center[3],
+                                     const double tangent[3], cyc_skin_end* out);
+/** The sphere of an end (no status: a pure formula). NULL end: nothing is
+ *  written; center or radius may be NULL (not wanted). */
+CYC_API void cyc_skin_end_sphere(const cyc_skin_end* end, double center[3], double* radius);
+
+/* Which points of the two circles the parameter curves theta = const join
+ * (cyc_skin_options.pairing). */
+#define CYC_SKIN_RMF 0             /* the rotation-minimizing transport (default) */
+#define CYC_SKIN_KUNKLI_HOFFMANN 1 /* the baseline of §2: +-e x t at both ends */
+#define CYC_SKIN_CROSS_TANGENTS 2  /* §2's t_i x t_f at both ends */
+/* How the RMF is integrated (cyc_skin_options.method). */
+#define CYC_RMF_REFERENCE 0         /* the angle's rate as a Chebyshev series (default) */
+#define CYC_RMF_DOUBLE_REFLECTION 1 /* Wang, Juttler, Zheng, Liu 2008 */
+
+/** Options of a skin (initialize with cyc_skin_options_init). The
+ *  baselines use the same spine and lambda, turning the RMF by
+ *  Delta (3 t^2 - 2 t^3) about the tangent to reach their end point. */
+typedef struct cyc_skin_options {
+  int pairing;         /* CYC_SKIN_* (default CYC_SKIN_RMF) */
+  int method;          /* CYC_RMF_* (default CYC_RMF_REFERENCE) */
+  double tolerance;    /* > 0: the RMF table's error bound (default 1e-13) */
+  double reference[3]; /* RMF pairing: the direction of theta = 0 at t = 0 (projected
+                          orthogonal to the start tangent); zero (default): the
+                          Kunkli-Hoffmann start direction */
+  double e[3];         /* Kunkli-Hoffmann's e; zero (default): the coordinate axis least
+                          aligned with both tangents */
+} cyc_skin_options;
+/** The defaults above. NULL is ignored. */
+CYC_API void cyc_skin_options_init(cyc_skin_options* options);
+
+/** A skin: one patch (cyc_sphere_skin_create) or a chain of patches
+ *  (cyc_sphere_skin_chain_create), each on theta any real, t in [0, 1]. */
+typedef struct cyc_sphere_skin cyc_sphere_skin;
+
+/** The skin from start to end (options NULL: the defaults). Statuses:
+ *  CYC_E_NULL_ARGUMENT (start, end, out), CYC_E_INVALID_ARGUMENT (an
+ *  unknown pairing or method, radius <= 0, tolerance <= 0, e parallel to a
+ *  tangent for Kunkli-Hoffmann, reference parallel to the start tangent),
+ *  CYC_E_NOT_FINITE (an input NaN, infinite or beyond 1e100),
+ *  CYC_E_ZERO_TANGENT (a tangent zero, or the spine's alpha' vanishing on
+ *  [0, 1]), CYC_E_PARALLEL_LINES (cross tangents with parallel tangents),
+ *  CYC_E_NESTED_SPHERES (one end's sphere inside or equal to the other's),
+ *  CYC_E_CURVATURE_RADIUS_TOO_LARGE (kappa r >= 1 at an end, seed 002
+ *  Remark 2: the skin would fold there; longer tangents help),
+ *  CYC_E_NUMERICAL_OVERFLOW (the tolerance is not met with 256 steps per
+ *  table interval, or values overflow), CYC_E_OUT_OF_MEMORY. Creation
+ *  tier: allocates the handle (about 19 KB per patch). Nothing is written
+ *  on error. */
+CYC_API int cyc_sphere_skin_create(cyc_context* ctx, const cyc_skin_end* start,
+                                   const cyc_skin_end* end, const cyc_skin_options* options,
+                                   cyc_sphere_skin** out);
+/** A chain of spheres: ends[0 .. n-1] (n >= 2), one circle per sphere, patch
+ *  k from ends[k] to ends[k+1] (the middle ends' tangents point along the
+ *  chain); the theta = 0 direction of patch k + 1 is the end direction of
+ *  patch k, so theta-curves continue across the shared circles and the
+ *  patches join G^1 there. options.reference applies to the first patch.
+ *  Statuses: CYC_E_NULL_ARGUMENT (ends, out), CYC_E_INVALID_ARGUMENT (n < 2,
+ *  options), then those of cyc_sphere_skin_create per patch; on such a
+ *  patch failure *bad_patch (may be NULL) receives its index k, else it is
+ *  not written. Creation tier. All or nothing: *out is written only on
+ *  success. */
+CYC_API int cyc_sphere_skin_chain_create(cyc_context* ctx, const cyc_skin_end* ends, int n,
+                                         const cyc_skin_options* options, cyc_sphere_skin** out,
+                                         int* bad_patch);
+/** Destroy a skin (NULL: no-op). */
+CYC_API void cyc_sphere_skin_destroy(cyc_context* ctx, cyc_sphere_skin* skin);
+/** The number of patches (1 for cyc_sphere_skin_create, n - 1 for a
+ *  chain of n ends). */
+CYC_API int cyc_sphere_skin_patch_count(cyc_context* ctx, const cyc_sphere_skin* skin,
+                                        int* count);
+
+/** s(theta, t) of patch `patch` (0 .. count-1), ds/dtheta, ds/dt and the
+ *  unit normal (ds/dtheta x ds/dt normalized: outward where lambda > 0);
+ *  every output may be NULL. Statuses: CYC_E_NULL_ARGUMENT (skin),
+ *  CYC_E_INVALID_ARGUMENT (patch out of range), CYC_E_NOT_FINITE (theta or
+ *  t NaN or infinite), CYC_E_BAD_DOMAIN (t outside [0, 1]),
+ *  CYC_E_SINGULAR_POINT (normal asked for where |s_theta x s_t| <= 1e-14
+ *  |s_theta| |s_t|), CYC_E_NUMERICAL_OVERFLOW. Allocation-free; nothing is
+ *  written on error. */
+CYC_API int cyc_sphere_skin_eval(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
+                                 double theta, double t, double x[3], double x_theta[3],
+                                 double x_t[3], double normal[3]);
+/** The grid theta[0 .. ntheta-1] x t[0 .. nt-1] of a patch: point (i, j) at
+ *  index j * ntheta + i, 3 doubles each, in points and normals (either may
+ *  be NULL; the caller provides 3 ntheta nt doubles). The values equal
+ *  cyc_sphere_skin_eval's bits; normals at singular points (where
+ *  cyc_sphere_skin_eval says CYC_E_SINGULAR_POINT) are written as (0, 0, 0)
+ *  and counted in *singular (may be NULL), as cyc_surface_eval_grid does.
+ *  Statuses: CYC_E_NULL_ARGUMENT (skin, theta, t), CYC_E_INVALID_ARGUMENT
+ *  (patch, ntheta < 0 or nt < 0), CYC_E_NOT_FINITE, CYC_E_BAD_DOMAIN,
+ *  CYC_E_NUMERICAL_OVERFLOW (a point beyond the range, for skins beyond
+ *  1e50). Allocation-free; all or nothing. */
+CYC_API int cyc_sphere_skin_eval_grid(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
+                                      const double* theta, int ntheta, const double* t, int nt,
+                                      double* points, double* normals, size_t* singular);
+
+/** What a patch is made of. */
+typedef struct cyc_sphere_skin_info {
+  double kappa[2];           /* the spine's curvature at t = 0 and t = 1 (kappa r < 1) */
+  double delta;              /* the pairing's extra turn at t = 1 (0 for CYC_SKIN_RMF) */
+  int rmf_substeps;          /* CYC_RMF_DOUBLE_REFLECTION: steps per table interval (2 ..
+                                256); CYC_RMF_REFERENCE: the largest Chebyshev degree */
+  double rmf_error_estimate; /* estimated max error of the RMF (<= tolerance) */
+  double spine[4][3];        /* power form alpha(t) = c0 + c1 t + c2 t^2 + c3 t^3 */
+  int pairing;               /* CYC_SKIN_* */
+  int method;                /* CYC_RMF_* */
+} cyc_sphere_skin_info;
+/** The info of a patch. CYC_E_NULL_ARGUMENT (skin, out),
+ *  CYC_E_INVALID_ARGUMENT (patch out of range). Nothing is written on
+ *  error. */
+CYC_API int cyc_sphere_skin_info_get(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
+                                     cyc_sphere_skin_info* out);
+/** The twist of the curve theta = const of a patch against the RMF,
+ *  measured on the evaluated surface (integral of the rate at which its
+ *  direction from the spine turns about the tangent; Gauss-Legendre 8 x 16
+ *  nodes): 0 for CYC_SKIN_RMF, |delta| for the baselines.
+ *  CYC_E_NULL_ARGUMENT (skin, twist), CYC_E_INVALID_ARGUMENT (patch),
+ *  CYC_E_NOT_FINITE (theta), CYC_E_SINGULAR_POINT (the curve meets the
+ *  spine), CYC_E_NUMERICAL_OVERFLOW. Allocation-free; nothing is written on
+ *  error. */
+CYC_API int cyc_sphere_skin_twist(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
+                                  double theta, double* twist);
+/** lambda(t; theta) of a patch (the distance factor of s from the spine,
+ *  seed 002 eqs. (6)-(8), (10)) and the end scalars a[0] = a_i(theta),
+ *  a[1] = a_f(theta) of eqs. (9), (11) (a may be NULL).
+ *  CYC_E_NULL_ARGUMENT (skin, lambda), CYC_E_INVALID_ARGUMENT (patch),
+ *  CYC_E_NOT_FINITE (theta, t), CYC_E_BAD_DOMAIN (t outside [0, 1]),
+ *  CYC_E_NUMERICAL_OVERFLOW. Allocation-free; nothing is written on
+ *  error. */
+CYC_API int cyc_sphere_skin_lambda(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
+                                   double theta, double t, double* lambda, double a[2]);
+
 #ifdef __cplusplus
 }
 #endif
