@@ -341,6 +341,79 @@ void op_create(State& st) {
   record(st, h, 1, ends, o, a.moderate && b.moderate);
 }
 
+// cyc_optimize_skin_tangents (seed 002 Remark 2; optimizer tier): fuzzed
+// ends, skin options and tangent options (mostly the defaults; rarely 0,
+// 1, negative, huge or wild). Oracles: known statuses (UNSUPPORTED exactly
+// without Ceres), nothing written on error, and on OK finite ends with
+// the same centers, radii and tangent directions, kappa r < 1 reported,
+// and a skin that cyc_sphere_skin_create accepts (up to a failing
+// allocator).
+void op_tangents(State& st) {
+  Input& in = st.in;
+  const End a = make_logged_end(st), b = make_logged_end(st);
+  const Options o = make_options(in);
+  cyc_skin_tangent_options t;
+  cyc_skin_tangent_options_init(&t);
+  bool bad_options = false;
+  for (double* x : {&t.target, &t.min_ratio, &t.max_ratio}) {
+    if (!in.rarely()) continue;
+    switch (in.range(0, 4)) {
+      case 0: *x = 0.0; break;
+      case 1: *x = 1.0; break;
+      case 2: *x = -in.range(1, 16) / 8.0; break;
+      case 3: *x = in.range(1, 64) / 8.0; break;
+      default: *x = in.wild(); break;
+    }
+  }
+  if (in.rarely()) t.max_iterations = in.flag() ? -1 : in.range(0, 3);
+  bad_options = !(t.target > 0 && t.target < 1) || !(t.min_ratio > 0 && t.min_ratio <= 1) ||
+                !(t.max_ratio >= 1) || t.max_iterations < 0 || !std::isfinite(t.max_ratio);
+  const bool null_opt = in.rarely();
+  if (!st.spend(2)) return;
+  cyc_skin_end out[2];
+  cyc_skin_tangent_summary sum;
+  fz::fill_sentinel(reinterpret_cast<double*>(out), sizeof out / sizeof(double));
+  std::memset(&sum, 0xA5, sizeof sum);
+  const cyc_skin_tangent_summary blank = sum;
+  const int s = cyc_optimize_skin_tangents(st.ctx, &a.e, &b.e, o.null ? nullptr : &o.o,
+                                           null_opt ? nullptr : &t, &out[0], &out[1], &sum);
+  st.check("cyc_optimize_skin_tangents", s);
+  if (!cyc_optimizer_available()) {
+    FZ_CHECK(s == CYC_E_UNSUPPORTED, "tangents without Ceres: %s", cyc_status_name(s));
+    return;
+  }
+  if (!o.null && !o.valid_enums) {
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "tangents: bad enums gave %s", cyc_status_name(s));
+  } else if (!null_opt && bad_options) {
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT || s == CYC_E_NOT_FINITE, "tangents: bad options gave %s",
+             cyc_status_name(s));
+  } else {
+    FZ_CHECK(creation_status(s) && s != CYC_E_OUT_OF_MEMORY, "tangents: undocumented %s",
+             cyc_status_name(s));
+  }
+  if (s != CYC_OK) {
+    FZ_CHECK(fz::all_sentinel(reinterpret_cast<double*>(out), sizeof out / sizeof(double)) &&
+                 std::memcmp(&sum, &blank, sizeof sum) == 0,
+             "tangents wrote on error");
+    return;
+  }
+  const cyc_skin_end* in_ends[2] = {&a.e, &b.e};
+  for (int e = 0; e < 2; ++e) {
+    const cyc_skin_end &i0 = *in_ends[e], &o0 = out[e];
+    FZ_CHECK(std::memcmp(i0.center, o0.center, sizeof i0.center) == 0 && i0.radius == o0.radius,
+             "tangents: end %d moved its circle", e);
+    FZ_CHECK(fz::finite3(o0.tangent) && std::isfinite(o0.inv_c), "tangents: end %d not finite", e);
+    FZ_CHECK(sum.scale[e] > 0 && std::isfinite(sum.scale[e]) && sum.kappa_r[e] < 1,
+             "tangents: end %d scale %g kappa r %g", e, sum.scale[e], sum.kappa_r[e]);
+  }
+  cyc_sphere_skin* h = nullptr;
+  const int c = cyc_sphere_skin_create(st.ctx, &out[0], &out[1], o.null ? nullptr : &o.o, &h);
+  st.check("cyc_sphere_skin_create", c);
+  FZ_CHECK(c == CYC_OK || c == CYC_E_OUT_OF_MEMORY, "tangents OK but the skin gives %s",
+           cyc_status_name(c));
+  if (c == CYC_OK) cyc_sphere_skin_destroy(st.ctx, h);
+}
+
 void op_chain(State& st) {
   Input& in = st.in;
   const int n = in.range(-1, 6);
@@ -760,7 +833,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   const int nops = in.range(1, 12);
   for (int i = 0; i < nops; ++i) {
-    switch (in.range(0, 8)) {
+    switch (in.range(0, 9)) {
+      case 8: op_tangents(st); break;
       case 0: op_create(st); break;
       case 1: op_chain(st); break;
       case 2: op_eval(st); break;

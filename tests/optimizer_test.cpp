@@ -478,3 +478,66 @@ TEST(Optimizer, PCurveBumpMoreNormalThroughTheCApi) {
   cyc_surface_destroy(c.ctx, pieces[0]);
   cyc_surface_destroy(c.ctx, again[0]);
 }
+
+// Seed 002 Remark 2 through the C ABI: short tangents make kappa r > 1
+// (cyc_sphere_skin_create refuses), cyc_optimize_skin_tangents lengthens
+// them (directions, cones and spheres kept) until the skin is valid; a
+// valid input comes back unchanged; bad options and an unreachable box
+// give their statuses and write nothing.
+TEST(Optimizer, SkinTangentsThroughTheCApi) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  const double m0[3] = {0, 0, 0}, p0[3] = {0.3, 0, 0}, t0[3] = {0.9, 0, 0};
+  const double ax[3] = {0.8281, 0.4969, 0.2484};  // (1, 0.6, 0.3) normalized
+  const double m1[3] = {4, 1, 0.5};
+  double p1[3], t1[3];
+  for (int k = 0; k < 3; ++k) p1[k] = m1[k] - 0.4 * ax[k], t1[k] = 0.9 * ax[k];
+  cyc_skin_end s, e;
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &s), CYC_OK);
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &e), CYC_OK);
+  cyc_sphere_skin* h = nullptr;
+  ASSERT_EQ(cyc_sphere_skin_create(ctx, &s, &e, nullptr, &h), CYC_E_CURVATURE_RADIUS_TOO_LARGE);
+  cyc_skin_tangent_options o;
+  cyc_skin_tangent_options_init(&o);
+  EXPECT_EQ(o.target, 0.9);
+  cyc_skin_end so, eo;
+  cyc_skin_tangent_summary sum;
+  ASSERT_EQ(cyc_optimize_skin_tangents(ctx, &s, &e, nullptr, &o, &so, &eo, &sum), CYC_OK)
+      << cyc_context_last_error(ctx);
+  EXPECT_GT(sum.iterations, 0);
+  EXPECT_GT(std::max(sum.kappa_r_initial[0], sum.kappa_r_initial[1]), 1.0);
+  EXPECT_LT(std::max(sum.kappa_r[0], sum.kappa_r[1]), 0.9 * 1.001);
+  for (int i = 0; i < 2; ++i) {
+    const cyc_skin_end &in = i ? e : s, &out = i ? eo : so;
+    double c0[3], c1[3], r0, r1;
+    cyc_skin_end_sphere(&in, c0, &r0);
+    cyc_skin_end_sphere(&out, c1, &r1);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(c0[k], c1[k], 1e-12);
+      EXPECT_NEAR(out.tangent[k], sum.scale[i] * in.tangent[k], 1e-12);
+    }
+    EXPECT_NEAR(r0, r1, 1e-12);
+  }
+  ASSERT_EQ(cyc_sphere_skin_create(ctx, &so, &eo, nullptr, &h), CYC_OK);
+  cyc_sphere_skin_destroy(ctx, h);
+  // Valid input: unchanged, 0 iterations.
+  cyc_skin_end so2, eo2;
+  ASSERT_EQ(cyc_optimize_skin_tangents(ctx, &so, &eo, nullptr, nullptr, &so2, &eo2, nullptr),
+            CYC_OK);
+  EXPECT_EQ(std::memcmp(&so2, &so, sizeof so), 0);
+  EXPECT_EQ(std::memcmp(&eo2, &eo, sizeof eo), 0);
+  // Errors write nothing.
+  std::memset(&so2, 0x5a, sizeof so2);
+  const cyc_skin_end blank = so2;
+  o.target = 1.0;
+  EXPECT_EQ(cyc_optimize_skin_tangents(ctx, &s, &e, nullptr, &o, &so2, &eo2, &sum),
+            CYC_E_INVALID_ARGUMENT);
+  cyc_skin_tangent_options_init(&o);
+  o.max_ratio = 1.2;
+  EXPECT_EQ(cyc_optimize_skin_tangents(ctx, &s, &e, nullptr, &o, &so2, &eo2, &sum),
+            CYC_E_CURVATURE_RADIUS_TOO_LARGE);
+  EXPECT_EQ(cyc_optimize_skin_tangents(ctx, &s, nullptr, nullptr, nullptr, &so2, &eo2, &sum),
+            CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(std::memcmp(&so2, &blank, sizeof so2), 0);
+  cyc_context_destroy(ctx);
+}

@@ -6,8 +6,16 @@
 #include "cyclide/curve.hpp"
 #include "cyclide/sphere_skin.hpp"
 
+#ifndef CYCLIDE_HAVE_CERES
+#define CYCLIDE_HAVE_CERES 0
+#endif
+#if CYCLIDE_HAVE_CERES
+#include "optim/skin_optimizer.hpp"
+#endif
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 using namespace cyclide;
 using namespace cyclide::capi;
@@ -470,6 +478,74 @@ int cyc_sphere_skin_lambda(cyc_context* ctx, const cyc_sphere_skin* skin, int pa
     *lambda = l;
     if (a) a[0] = ends[0], a[1] = ends[1];
     return ok();
+  });
+}
+
+void cyc_skin_tangent_options_init(cyc_skin_tangent_options* options) {
+  if (!options) return;
+  std::memset(options, 0, sizeof *options);
+  options->target = 0.9;
+  options->min_ratio = 1.0 / 16;
+  options->max_ratio = 16.0;
+  options->max_iterations = 100;
+}
+
+int cyc_optimize_skin_tangents(cyc_context* ctx, const cyc_skin_end* start,
+                               const cyc_skin_end* end, const cyc_skin_options* skin,
+                               const cyc_skin_tangent_options* options, cyc_skin_end* start_out,
+                               cyc_skin_end* end_out, cyc_skin_tangent_summary* summary) {
+  const char* fn = "cyc_optimize_skin_tangents";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(start);
+    REQUIRE(end);
+    REQUIRE(start_out);
+    REQUIRE(end_out);
+#if CYCLIDE_HAVE_CERES
+    SkinOptions o;
+    if (Outcome r = options_of(fn, skin, o); r.status) return r;
+    cyc_skin_tangent_options p;
+    cyc_skin_tangent_options_init(&p);
+    if (options) p = *options;
+    if (!std::isfinite(p.target) || !std::isfinite(p.min_ratio) || !std::isfinite(p.max_ratio))
+      return fail(CYC_E_NOT_FINITE, "%s: options: target, min_ratio or max_ratio not finite", fn);
+    if (!(p.target > 0 && p.target < 1) || !(p.min_ratio > 0 && p.min_ratio <= 1) ||
+        !(p.max_ratio >= 1) || p.max_iterations < 0)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: options: target %.17g must be in (0, 1), 0 < min_ratio %.17g <= 1 <= "
+                  "max_ratio %.17g, max_iterations %d >= 0",
+                  fn, p.target, p.min_ratio, p.max_ratio, p.max_iterations);
+    optim::SkinTangentOptions P;
+    P.target = p.target;
+    P.min_ratio = p.min_ratio;
+    P.max_ratio = p.max_ratio;
+    P.max_iterations = p.max_iterations;
+    const SkinEnd a = end_of(*start), b = end_of(*end);
+    SkinEnd s, e;
+    optim::SkinTangentSummary R;
+    if (Status st = optim::optimize_skin_tangents(a, b, o, P, s, e, R); st != Status::ok) {
+      if (st == Status::curvature_radius_too_large && R.iterations == 0)
+        return skin_failure(fn, "no tangent lengths in [min_ratio, max_ratio] help: ", st, a, b,
+                            o);
+      return skin_failure(fn, "", st, a, b, o);
+    }
+    *start_out = c_end_of(s);
+    *end_out = c_end_of(e);
+    if (summary) {
+      cyc_skin_tangent_summary m;
+      std::memset(&m, 0, sizeof m);
+      for (int i = 0; i < 2; ++i) {
+        m.scale[i] = R.scale[i];
+        m.kappa_r_initial[i] = R.kappa_r_initial[i];
+        m.kappa_r[i] = R.kappa_r[i];
+      }
+      m.iterations = R.iterations;
+      *summary = m;
+    }
+    return ok();
+#else
+    (void)skin; (void)options; (void)summary;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
   });
 }
 

@@ -1431,6 +1431,42 @@ CYC_API int cyc_sphere_skin_twist(cyc_context* ctx, const cyc_sphere_skin* skin,
 CYC_API int cyc_sphere_skin_lambda(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
                                    double theta, double t, double* lambda, double a[2]);
 
+/** Seed 002 Remark 2 (optimizer tier): tangent lengths that make a skin
+ *  valid (kappa r < 1 at both ends, ERRATA: a c > 0). */
+typedef struct cyc_skin_tangent_options {
+  double target;      /* kappa r kept <= target, in (0, 1); default 0.9 */
+  double min_ratio;   /* each length scale within [min_ratio, max_ratio]; default 1/16 */
+  double max_ratio;   /* default 16 */
+  int max_iterations; /* >= 0, default 100 */
+} cyc_skin_tangent_options;
+CYC_API void cyc_skin_tangent_options_init(cyc_skin_tangent_options* options);
+
+typedef struct cyc_skin_tangent_summary {
+  double scale[2];           /* t_i -> scale[0] t_i, t_f -> scale[1] t_f */
+  double kappa_r_initial[2]; /* kappa(0) r_i, kappa(1) r_f of the input */
+  double kappa_r[2];         /* of the result */
+  int iterations;            /* 0: the input was valid and is returned as is */
+} cyc_skin_tangent_summary;
+
+/** The ends with their tangents rescaled (directions, cones and spheres
+ *  kept: inv_c scales with the tangent) so that cyc_sphere_skin_create
+ *  succeeds: a valid input is returned unchanged; else Ceres minimizes
+ *  (log s_i)^2 + (log s_f)^2 with hinge penalties on kappa r / target - 1
+ *  (Remark 2's closed-form end curvatures, autodiff). skin: the skin's
+ *  options (NULL: defaults), options NULL: the defaults above. Statuses:
+ *  CYC_E_NULL_ARGUMENT (start, end, start_out, end_out),
+ *  CYC_E_INVALID_ARGUMENT (target outside (0, 1), ratios not 0 < min <= 1
+ *  <= max, max_iterations < 0, or the skin's own), CYC_E_NOT_FINITE,
+ *  CYC_E_CURVATURE_RADIUS_TOO_LARGE (no scaling in the box makes the skin
+ *  valid), the other statuses of cyc_sphere_skin_create;
+ *  CYC_E_UNSUPPORTED without Ceres. summary may be NULL. Nothing is
+ *  written on error. */
+CYC_API int cyc_optimize_skin_tangents(cyc_context* ctx, const cyc_skin_end* start,
+                                       const cyc_skin_end* end, const cyc_skin_options* skin,
+                                       const cyc_skin_tangent_options* options,
+                                       cyc_skin_end* start_out, cyc_skin_end* end_out,
+                                       cyc_skin_tangent_summary* summary);
+
 #ifdef __cplusplus
 }
 #endif
