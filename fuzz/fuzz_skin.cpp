@@ -757,9 +757,14 @@ void op_info(State& st) {
            "info: non-finite");
   FZ_CHECK(I.kappa[0] * a.radius < 1.0 - 1e-12 && I.kappa[1] * b.radius < 1.0 - 1e-12,
            "info: kappa r = %g, %g", I.kappa[0] * a.radius, I.kappa[1] * b.radius);
-  FZ_CHECK(I.rmf_substeps >= 2 && I.rmf_substeps <= 256 &&
-               (I.rmf_substeps & (I.rmf_substeps - 1)) == 0,
-           "info: substeps %d", I.rmf_substeps);
+  // Double reflection: steps per interval, a power of 2 in 2..256;
+  // reference: the largest Chebyshev degree, n + 1 with n a power of 2 in
+  // 8..64 (regress-info-reference-degree).
+  const int q = k->opt.method == CYC_RMF_DOUBLE_REFLECTION ? I.rmf_substeps : I.rmf_substeps - 1;
+  const int lo = k->opt.method == CYC_RMF_DOUBLE_REFLECTION ? 2 : 8;
+  const int hi = k->opt.method == CYC_RMF_DOUBLE_REFLECTION ? 256 : 64;
+  FZ_CHECK(q >= lo && q <= hi && (q & (q - 1)) == 0, "info: substeps %d (method %d)",
+           I.rmf_substeps, k->opt.method);
   FZ_CHECK(I.rmf_error_estimate >= 0 && I.rmf_error_estimate <= k->opt.tolerance,
            "info: error estimate %g, tolerance %g", I.rmf_error_estimate, k->opt.tolerance);
   if (k->opt.pairing == CYC_SKIN_RMF) FZ_CHECK(I.delta == 0.0, "info: rmf with delta %g", I.delta);
