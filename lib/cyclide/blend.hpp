@@ -5,6 +5,8 @@
 // of a join between two surfaces along a common circle. Allocation-free.
 #pragma once
 
+#include <type_traits>
+
 #include "cyclide/hermite.hpp"
 #include "cyclide/surface.hpp"
 
@@ -14,6 +16,29 @@ inline namespace v0 {
 // Largest derivative order of derivatives_u and of blends (the Hermite
 // curves have degree 2K+1 <= kMaxCurveDegree).
 constexpr int kMaxBlendOrder = kMaxHermiteOrder;  // 7
+
+namespace detail {
+
+// Calls fn(std::integral_constant<int, N>()) for N = K and returns its
+// status if 0 <= K <= kMaxBlendOrder; Status::degree_too_high (fn not
+// called) for any other K.
+template <class Fn>
+inline Status with_order(int K, Fn&& fn) {
+  switch (K) {
+    case 0: return fn(std::integral_constant<int, 0>());
+    case 1: return fn(std::integral_constant<int, 1>());
+    case 2: return fn(std::integral_constant<int, 2>());
+    case 3: return fn(std::integral_constant<int, 3>());
+    case 4: return fn(std::integral_constant<int, 4>());
+    case 5: return fn(std::integral_constant<int, 5>());
+    case 6: return fn(std::integral_constant<int, 6>());
+    case 7: return fn(std::integral_constant<int, 7>());
+    default: return Status::degree_too_high;
+  }
+}
+static_assert(kMaxBlendOrder == 7, "with_order covers 0..7");
+
+}  // namespace detail
 
 // out[l] = d^l x / du^l (u, v), l = 0..K (K <= kMaxBlendOrder), from the frame
 // as Taylor series of order K pushed through the rotation formula (no finite

@@ -219,15 +219,28 @@ void circle_offsets(const CircleFrame<Taylor<T, 2>>& F, const Vec3d& X, T& h, T&
   radial = sqrt_of(T((w - h * n).squaredNorm())) - sqrt_of(G.radius2);
 }
 
-// reparameterize with the series truncated at order K (not kMaxBlendOrder).
+// The optimizer's dispatch on the order K: detail::with_order with K
+// clamped to 0..kMaxBlendOrder, so fn is always called (K outside 1..7 is
+// excluded by check_inputs; the clamp keeps such a K at kMaxBlendOrder via
+// series_order, as the former switches did).
+template <class Fn>
+Status with_clamped_order(int K, Fn&& fn) {
+  return detail::with_order(std::min(std::max(K, 0), kMaxBlendOrder), std::forward<Fn>(fn));
+}
+
+// The series order used for order N: N itself for 1 <= N <= Exact, else
+// kMaxBlendOrder (fewer instantiations of the Jet code for the higher orders).
+template <int N, int Exact>
+constexpr int series_order = (N >= 1 && N <= Exact) ? N : kMaxBlendOrder;
+
+// reparameterize with the series truncated at order K (not kMaxBlendOrder)
+// for K <= 3.
 template <class D, class T>
 void reparameterize_k(int K, const Vec3<D>* dx, const T* jet, Vec3<T>* out) {
-  switch (K) {
-    case 1: return reparameterize_to<1>(K, dx, jet, out);
-    case 2: return reparameterize_to<2>(K, dx, jet, out);
-    case 3: return reparameterize_to<3>(K, dx, jet, out);
-    default: return reparameterize_to<kMaxBlendOrder>(K, dx, jet, out);
-  }
+  with_clamped_order(K, [&](auto n) -> Status {
+    reparameterize_to<series_order<decltype(n)::value, 3>>(K, dx, jet, out);
+    return Status::ok;
+  });
 }
 
 // The frame's series truncated to order N.
@@ -263,12 +276,12 @@ bool moving_point_derivatives(const CircleFrame<Taylor<double, kMaxBlendOrder>>&
   using std::cos;
   using std::sin;
   const T s1 = sin(0.5 * theta), s0 = cos(0.5 * theta);
-  switch (K) {
-    case 1: return moving_point_order<1>(F, s1, s0, dx);
-    case 2: return moving_point_order<2>(F, s1, s0, dx);
-    case 3: return moving_point_order<3>(F, s1, s0, dx);
-    default: return moving_point_order<kMaxBlendOrder>(F, s1, s0, dx);
-  }
+  bool ok = false;
+  with_clamped_order(K, [&](auto n) -> Status {
+    ok = moving_point_order<series_order<decltype(n)::value, 3>>(F, s1, s0, dx);
+    return Status::ok;
+  });
+  return ok;
 }
 
 // The residual vector (layout: per t node the determinant hinge, one
@@ -853,15 +866,9 @@ Status end_frame_order(const Surface& S, double u,
 
 Status end_frame(const Surface& S, double u, int K,
                  CircleFrame<Taylor<double, kMaxBlendOrder>>& out) {
-  switch (K) {
-    case 1: return end_frame_order<1>(S, u, out);
-    case 2: return end_frame_order<2>(S, u, out);
-    case 3: return end_frame_order<3>(S, u, out);
-    case 4: return end_frame_order<4>(S, u, out);
-    case 5: return end_frame_order<5>(S, u, out);
-    case 6: return end_frame_order<6>(S, u, out);
-    default: return end_frame_order<kMaxBlendOrder>(S, u, out);
-  }
+  return with_clamped_order(K, [&](auto n) -> Status {
+    return end_frame_order<series_order<decltype(n)::value, kMaxBlendOrder>>(S, u, out);
+  });
 }
 
 // The ends' jets and circle parameters for the unknowns x: the jets' free

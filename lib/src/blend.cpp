@@ -9,23 +9,6 @@ inline namespace v0 {
 
 namespace {
 
-// Calls fn(std::integral_constant<int, N>) for N = K (0 <= K <= kMaxBlendOrder).
-template <class Fn>
-Status with_order(int K, Fn&& fn) {
-  switch (K) {
-    case 0: return fn(std::integral_constant<int, 0>());
-    case 1: return fn(std::integral_constant<int, 1>());
-    case 2: return fn(std::integral_constant<int, 2>());
-    case 3: return fn(std::integral_constant<int, 3>());
-    case 4: return fn(std::integral_constant<int, 4>());
-    case 5: return fn(std::integral_constant<int, 5>());
-    case 6: return fn(std::integral_constant<int, 6>());
-    case 7: return fn(std::integral_constant<int, 7>());
-    default: return Status::degree_too_high;
-  }
-}
-static_assert(kMaxBlendOrder == 7, "with_order covers 0..7");
-
 bool finite3(const Vec3d& x) {
   return std::isfinite(x.x()) && std::isfinite(x.y()) && std::isfinite(x.z());
 }
@@ -82,7 +65,7 @@ Status derivatives_u(const Surface& S, double u, double v, int K, Vec3d* out) {
   if (K > kMaxBlendOrder) return Status::degree_too_high;
   if (!input_ok(u) || std::isnan(v)) return Status::not_finite;
   Vec3d tmp[kMaxBlendOrder + 1];
-  const Status st = with_order(K, [&](auto n) -> Status {
+  const Status st = detail::with_order(K, [&](auto n) -> Status {
     constexpr int N = decltype(n)::value;
     Vec3<Taylor<double, N>> x;
     if (Status s = point_series<N>(S, u, v, x); s != Status::ok) return s;
@@ -265,7 +248,7 @@ Status matched_circles(const RationalCurve* p, const BlendEnd& start,
   double jet[2][4][kMaxBlendOrder + 1];
   double det[2];
   for (int e = 0; e < 2; ++e) {
-    const Status st = with_order(K, [&](auto n) -> Status {
+    const Status st = detail::with_order(K, [&](auto n) -> Status {
       return end_mobius<decltype(n)::value>(p, *ends[e], te[e], jet[e]);
     });
     if (st != Status::ok) {
@@ -420,7 +403,7 @@ Status continuity_report(const Surface& A, double uA, const double* jet, const S
   R.samples = n;
 
   // The circle families.
-  const Status cs = with_order(K, [&](auto order) -> Status {
+  const Status cs = detail::with_order(K, [&](auto order) -> Status {
     constexpr int N = decltype(order)::value;
     Vec3<Taylor<double, N>> ca, na, cb, nb;
     Taylor<double, N> ra, rb;

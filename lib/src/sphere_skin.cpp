@@ -583,6 +583,28 @@ Status make_sphere_skin_from(const SkinEnd& start, const SkinEnd& end, const Vec
 
 namespace {
 
+// The cubic Hermite basis on [0, 1] at t, the weights of (p0, m0, p1, m1),
+// and (if dH is given) its derivatives.
+void cubic_hermite_basis(double t, double* H, double* dH = nullptr) {
+  const double t2 = t * t, t3 = t2 * t;
+  H[0] = 2 * t3 - 3 * t2 + 1;
+  H[1] = t3 - 2 * t2 + t;
+  H[2] = -2 * t3 + 3 * t2;
+  H[3] = t3 - t2;
+  if (!dH) return;
+  dH[0] = 6 * t2 - 6 * t;
+  dH[1] = 3 * t2 - 4 * t + 1;
+  dH[2] = -6 * t2 + 6 * t;
+  dH[3] = 3 * t2 - 2 * t;
+}
+
+// lambda = H0 r_i - H1 a_i r_i + H2 r_f - H3 a_f r_f (seed 002 eqs. (6)-(11):
+// the cubic Hermite (6), (7), (8), (10) with the end scalars a_i, a_f of (9),
+// (11)); with the basis' derivatives dH in place of H, lambda's t-derivative.
+double hermite_lambda(const double* H, double ri, double ai, double rf, double af) {
+  return H[0] * ri - H[1] * ai * ri + H[2] * rf - H[3] * af * rf;
+}
+
 // Everything at one t that does not depend on theta.
 struct SkinColumn {
   Vec3d alpha, d1, W1, W2, dW1, dW2;
@@ -602,15 +624,8 @@ SkinColumn column(const SphereSkin& S, double t) {
   rmf_at(S.spine, S.rmf, t, c.W1, &c.dW1);
   c.W2 = u.cross(c.W1);
   c.dW2 = du.cross(c.W1) + u.cross(c.dW1);
+  cubic_hermite_basis(t, c.H, c.dH);
   const double t2 = t * t, t3 = t2 * t;
-  c.H[0] = 2 * t3 - 3 * t2 + 1;
-  c.H[1] = t3 - 2 * t2 + t;
-  c.H[2] = -2 * t3 + 3 * t2;
-  c.H[3] = t3 - t2;
-  c.dH[0] = 6 * t2 - 6 * t;
-  c.dH[1] = 3 * t2 - 4 * t + 1;
-  c.dH[2] = -6 * t2 + 6 * t;
-  c.dH[3] = 3 * t2 - 2 * t;
   const double turn = S.delta * (3 * t2 - 2 * t3);
   c.cturn = std::cos(turn);
   c.sturn = std::sin(turn);
@@ -647,8 +662,8 @@ SkinPoint point(const SphereSkin& S, const SkinColumn& c, const ThetaTrig& g) {
   end_a(S, 0, g, ai, dai);
   end_a(S, 1, g, af, daf);
   // lambda: the cubic Hermite (6), (7), (8), (10).
-  const double lam = c.H[0] * ri - c.H[1] * ai * ri + c.H[2] * rf - c.H[3] * af * rf;
-  const double lam_t = c.dH[0] * ri - c.dH[1] * ai * ri + c.dH[2] * rf - c.dH[3] * af * rf;
+  const double lam = hermite_lambda(c.H, ri, ai, rf, af);
+  const double lam_t = hermite_lambda(c.dH, ri, ai, rf, af);
   const double lam_th = -c.H[1] * dai * ri - c.H[3] * daf * rf;
   // phi = theta + delta s(t).
   const double cp = g.c * c.cturn - g.s * c.sturn, sp = g.s * c.cturn + g.c * c.sturn;
@@ -689,14 +704,15 @@ double skin_magnitude(const SphereSkin& S) {
 }
 
 double skin_lambda(const SphereSkin& S, double theta, double t, double* a) {
-  const SkinColumn c = column(S, t);
+  double H[4];  // only the basis: no frame (RMF) needed for lambda
+  cubic_hermite_basis(t, H);
   const ThetaTrig g = theta_trig(S, theta);
   double ai, dai, af, daf;
   end_a(S, 0, g, ai, dai);
   end_a(S, 1, g, af, daf);
   if (a) a[0] = ai, a[1] = af;
   const double ri = S.ends[0].radius, rf = S.ends[1].radius;
-  return c.H[0] * ri - c.H[1] * ai * ri + c.H[2] * rf - c.H[3] * af * rf;
+  return hermite_lambda(H, ri, ai, rf, af);
 }
 
 Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double* x_theta,
