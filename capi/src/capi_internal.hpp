@@ -143,6 +143,22 @@ inline const char* explain(Status s) {
     case Status::curvature_radius_too_large:
       return "the spine's curvature times the circle's radius is >= 1 at an end (seed 002 "
              "Remark 2: a c <= 0, the skin folds; lengthen the end tangents)";
+    case Status::sphere_pencil:
+      return "the three spheres span only a pencil (dim A = 2): infinitely many spheres touch, no cyclide";
+    case Status::no_touching_sphere:
+      return "no oriented sphere touches all three (span is R^{1,2}, its complement R^3)";
+    case Status::single_touching_sphere:
+      return "exactly one oriented sphere touches all three (span is R^{1,1,1}): no one-parameter family";
+    case Status::degenerate_cyclide:
+      return "every sphere of one family is a point: the cyclide degenerates to a curve";
+    case Status::not_isometric:
+      return "the two subspaces are not isometric (Gram matrices or signatures differ)";
+    case Status::not_on_lie_quadric:
+      return "the vector is not neutral (x.x != 0): it represents no Lie sphere";
+    case Status::point_at_infinity:
+      return "the point lies at infinity (c . n_inf = 0)";
+    case Status::tangent_generating_spheres:
+      return "the two cones' generating spheres are in oriented contact (r0 . s0 = 0), a case seed 003 omits";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

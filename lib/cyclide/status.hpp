@@ -33,6 +33,14 @@ enum class Status : int {
   intersecting_circles = 116,  // seed 001 §6: two joining circles on the auxiliary sphere meet
   nested_spheres = 117,        // seed 002: one sphere inside (or equal to) the other
   curvature_radius_too_large = 118,  // seed 002 Remark 2: kappa r >= 1 at an end (a c <= 0)
+  sphere_pencil = 119,  // seed 003 §3.1 Case I: dim span(a1,a2,a3) = 2, a pencil of touching spheres (no envelope)
+  no_touching_sphere = 120,  // seed 003 §3.1 Case II.1: A = R^{1,2}, no Lie sphere touches all three
+  single_touching_sphere = 121,  // seed 003 §3.1 Case II.2: A = R^{1,1,1}, exactly one sphere touches all three
+  degenerate_cyclide = 122,  // seed 003 §3.3: A or its complement lies in e_r-perp (all spheres are points): a curve, not a surface
+  not_isometric = 123,  // seed 003 Thm. 2.3: Gram matrices or signatures differ, no orthogonal map exists
+  not_on_lie_quadric = 124,  // seed 003 (2): the vector is not neutral (not a Lie sphere)
+  point_at_infinity = 125,  // seed 003 (26): the point sphere is n_inf (the point lies at infinity)
+  tangent_generating_spheres = 126,  // seed 003 Lemma 4.6 (i): r0 . s0 = 0, the cones' generating spheres touch
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

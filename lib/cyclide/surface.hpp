@@ -11,6 +11,7 @@
 #include "cyclide/compiled_frame.hpp"
 #include "cyclide/config.hpp"
 #include "cyclide/curve.hpp"
+#include "cyclide/dupin.hpp"
 #include "cyclide/evaluator.hpp"
 #include "cyclide/prcs.hpp"
 #include "cyclide/prrs.hpp"
@@ -34,6 +35,7 @@ enum class SurfaceKind : int {
   prrs = 2,  // ringed surface from three curves (some may be points)
   ringed = 3,  // ringed surface (d, n, rho) from its directrix d, orientation
                // n and a curve c on it (seed 001 eq. (3))
+  dupin = 4,   // Dupin cyclide (seed 003 §3): the circles are its zeta-lines
 };
 
 class Surface {
@@ -46,6 +48,7 @@ class Surface {
   double u0 = 0, u1 = 1;       // domain checked at creation
   double tangent_scale = 1.0;  // PRCS: max |p_i'| over the domain samples
   CompiledFrame compiled;      // fast exact frames, verified at creation
+  DupinView dupin;             // kind dupin: the cyclide and its parameter maps
 
   bool is_canal_by_construction() const { return kind == SurfaceKind::prcs; }
 
@@ -66,6 +69,10 @@ class Surface {
   // The frame at u as series of order N (N = 0: values, N = 1: with d/du).
   template <int N>
   Status frame(double u, CircleFrame<Taylor<double, N>>& F) const {
+    if (kind == SurfaceKind::dupin) {  // o, a, p and f from the Lie data at once
+      const Status st = dupin_frame(dupin, Taylor<double, N>::variable(u), F);
+      return st != Status::ok ? st : check_frame(F);
+    }
     if (!compiled.eval<N>(u, F.o, F.a, F.p)) {
       const Status st = numeric_frame<N>(u, F);
       if (st != Status::ok) return st;
@@ -102,6 +109,7 @@ class Surface {
       case SurfaceKind::prcs: return prcs_frame<N>(curve[0], curve[1], u, tangent_scale, F);
       case SurfaceKind::prrs: return prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
       case SurfaceKind::ringed: return ringed_frame<N>(curve[0], curve[1], curve[2], u, F);
+      case SurfaceKind::dupin: return dupin_frame(dupin, Taylor<double, N>::variable(u), F);
     }
     return Status::internal_error;
   }
@@ -162,6 +170,13 @@ Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
 // dependent_planes (no circle plane), c on the axis line singular_point.
 Status make_ringed(const RationalCurve& d, const RationalCurve& n, const RationalCurve& c,
                    const Mobius* f, double u0, double u1, Surface& out, double* bad_u = nullptr);
+// A Dupin cyclide as a circle-family surface over u in [u0, u1] (see
+// DupinView in dupin.hpp: u -> xi and v -> zeta are Mobius maps, which must
+// be non-degenerate: invalid_argument otherwise). The domain is scanned like
+// the other builders: a point at infinity (point_at_infinity) or a circle
+// shrunk to a point (singular_point) at a sample is reported with *bad_u.
+Status make_dupin_surface(const DupinView& view, double u0, double u1, Surface& out,
+                          double* bad_u = nullptr);
 // Mobius coefficients from power-form coefficient arrays of length degree+1.
 Status make_mobius(int degree, const double* alpha, const double* beta,
                    const double* gamma, const double* delta, Mobius& out);

@@ -234,6 +234,18 @@ Status Surface::circle(double u, Vec3d& center, Vec3d& unit_normal, double& radi
 }
 
 Status Surface::sphere(double u, Vec3d& center, double& radius2) const {
+  if (kind == SurfaceKind::dupin) {  // the sphere a(xi(u)) of the family
+    if (!input_ok(u)) return Status::not_finite;
+    const double* m = dupin.xi_map;
+    LieSphere s;
+    const Status st = dupin_sphere_xi(dupin.cyclide, {m[0] * u + m[1], m[2] * u + m[3]}, s);
+    if (st != Status::ok) return st;
+    if (s.kind == LieSphereKind::plane || s.kind == LieSphereKind::point_at_infinity)
+      return Status::point_at_infinity;
+    center = s.m;
+    radius2 = s.rho * s.rho;
+    return Status::ok;
+  }
   if (!is_canal_by_construction()) return Status::not_canal;
   if (!input_ok(u)) return Status::not_finite;
   CircleFrame<Taylor<double, 0>> F;
@@ -346,6 +358,7 @@ void compile_frames(Surface& S) {
     case SurfaceKind::ringed:
       st = exact_ringed_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
       break;
+    case SurfaceKind::dupin: return;  // frames straight from the Lie data
   }
   if (st != Status::ok) return;
   const ExactVec3* src[3] = {&E.o, &E.a, &E.p};
@@ -510,6 +523,29 @@ Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
   return make_three_curve_surface(SurfaceKind::prrs, p1, p2, p3, f, u0, u1, out, bad_u);
 }
 
+Status make_dupin_surface(const DupinView& view, double u0, double u1, Surface& out,
+                          double* bad_u) {
+  if (Status st = check_domain(u0, u1); st != Status::ok) return st;
+  if (!view.cyclide.theta.allFinite()) return Status::not_finite;
+  for (const double* m : {view.xi_map, view.zeta_map}) {
+    for (int i = 0; i < 4; ++i)
+      if (!input_ok(m[i])) return Status::not_finite;
+    const double big = std::max(std::max(std::abs(m[0]), std::abs(m[1])),
+                                std::max(std::abs(m[2]), std::abs(m[3])));
+    if (!(std::abs(m[0] * m[3] - m[1] * m[2]) > 1e-12 * big * big))
+      return Status::invalid_argument;
+  }
+  Surface S;
+  S.kind = SurfaceKind::dupin;
+  S.dupin = view;
+  S.f_constant = false;
+  S.u0 = u0;
+  S.u1 = u1;
+  if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  out = S;
+  return Status::ok;
+}
+
 Status make_ringed(const RationalCurve& d, const RationalCurve& n, const RationalCurve& c,
                    const Mobius* f, double u0, double u1, Surface& out, double* bad_u) {
   if (Status st = check_domain(u0, u1); st != Status::ok) return st;
@@ -545,6 +581,14 @@ const char* status_name(Status s) noexcept {
     case Status::intersecting_circles: return "CYC_E_INTERSECTING_CIRCLES";
     case Status::nested_spheres: return "CYC_E_NESTED_SPHERES";
     case Status::curvature_radius_too_large: return "CYC_E_CURVATURE_RADIUS_TOO_LARGE";
+    case Status::sphere_pencil: return "CYC_E_SPHERE_PENCIL";
+    case Status::no_touching_sphere: return "CYC_E_NO_TOUCHING_SPHERE";
+    case Status::single_touching_sphere: return "CYC_E_SINGLE_TOUCHING_SPHERE";
+    case Status::degenerate_cyclide: return "CYC_E_DEGENERATE_CYCLIDE";
+    case Status::not_isometric: return "CYC_E_NOT_ISOMETRIC";
+    case Status::not_on_lie_quadric: return "CYC_E_NOT_ON_LIE_QUADRIC";
+    case Status::point_at_infinity: return "CYC_E_POINT_AT_INFINITY";
+    case Status::tangent_generating_spheres: return "CYC_E_TANGENT_GENERATING_SPHERES";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -33,6 +33,14 @@ enum cyc_status {
   CYC_E_INTERSECTING_CIRCLES = 116, /* seed 001 §6: joining circles on the sphere meet */
   CYC_E_NESTED_SPHERES = 117,       /* seed 002: one sphere inside (or equal to) the other */
   CYC_E_CURVATURE_RADIUS_TOO_LARGE = 118, /* seed 002 Remark 2: kappa r >= 1 at an end */
+  CYC_E_SPHERE_PENCIL = 119, /* seed 003 sec. 3.1 Case I: dim span(a1,a2,a3) = 2, a pencil of touching spheres (no envelope) */
+  CYC_E_NO_TOUCHING_SPHERE = 120, /* seed 003 sec. 3.1 Case II.1: A = R^{1,2}, no Lie sphere touches all three */
+  CYC_E_SINGLE_TOUCHING_SPHERE = 121, /* seed 003 sec. 3.1 Case II.2: A = R^{1,1,1}, exactly one sphere touches all three */
+  CYC_E_DEGENERATE_CYCLIDE = 122, /* seed 003 sec. 3.3: A or its complement lies in e_r-perp (all spheres are points): a curve, not a surface */
+  CYC_E_NOT_ISOMETRIC = 123, /* seed 003 Thm. 2.3: Gram matrices or signatures differ, no orthogonal map exists */
+  CYC_E_NOT_ON_LIE_QUADRIC = 124, /* seed 003 (2): the vector is not neutral (not a Lie sphere) */
+  CYC_E_POINT_AT_INFINITY = 125, /* seed 003 (26): the point sphere is n_inf (the point lies at infinity) */
+  CYC_E_TANGENT_GENERATING_SPHERES = 126, /* seed 003 Lemma 4.6 (i): r0 . s0 = 0, the cones' generating spheres touch */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 
