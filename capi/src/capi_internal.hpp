@@ -159,6 +159,8 @@ inline const char* explain(Status s) {
       return "the point lies at infinity (c . n_inf = 0)";
     case Status::tangent_generating_spheres:
       return "the two cones' generating spheres are in oriented contact (r0 . s0 = 0), a case seed 003 omits";
+    case Status::blend_folds:
+      return "a cyclide patch reaches a glued circle from the wrong side, so the blend folds back (try the other hyperbola branch, another alpha, or the other orientation)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -51,6 +51,7 @@ CYC_SAME(CYC_E_NOT_ISOMETRIC, not_isometric);
 CYC_SAME(CYC_E_NOT_ON_LIE_QUADRIC, not_on_lie_quadric);
 CYC_SAME(CYC_E_POINT_AT_INFINITY, point_at_infinity);
 CYC_SAME(CYC_E_TANGENT_GENERATING_SPHERES, tangent_generating_spheres);
+CYC_SAME(CYC_E_BLEND_FOLDS, blend_folds);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);

@@ -41,6 +41,7 @@ enum class Status : int {
   not_on_lie_quadric = 124,  // seed 003 (2): the vector is not neutral (not a Lie sphere)
   point_at_infinity = 125,  // seed 003 (26): the point sphere is n_inf (the point lies at infinity)
   tangent_generating_spheres = 126,  // seed 003 Lemma 4.6 (i): r0 . s0 = 0, the cones' generating spheres touch
+  blend_folds = 127,  // seed 003 Alg. 2: a cyclide patch meets a glued circle from the wrong side (the blend folds back)
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

@@ -589,6 +589,7 @@ const char* status_name(Status s) noexcept {
     case Status::not_on_lie_quadric: return "CYC_E_NOT_ON_LIE_QUADRIC";
     case Status::point_at_infinity: return "CYC_E_POINT_AT_INFINITY";
     case Status::tangent_generating_spheres: return "CYC_E_TANGENT_GENERATING_SPHERES";
+    case Status::blend_folds: return "CYC_E_BLEND_FOLDS";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -41,6 +41,7 @@ enum cyc_status {
   CYC_E_NOT_ON_LIE_QUADRIC = 124, /* seed 003 (2): the vector is not neutral (not a Lie sphere) */
   CYC_E_POINT_AT_INFINITY = 125, /* seed 003 (26): the point sphere is n_inf (the point lies at infinity) */
   CYC_E_TANGENT_GENERATING_SPHERES = 126, /* seed 003 Lemma 4.6 (i): r0 . s0 = 0, the cones' generating spheres touch */
+  CYC_E_BLEND_FOLDS = 127, /* seed 003 Alg. 2: a cyclide patch meets a glued circle from the wrong side (the blend folds back) */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 

@@ -1,0 +1,364 @@
+// Algorithm 2 of seed 003: single and double Dupin cyclide blends of two
+// cones (see cyclide_blend.hpp).
+#include "cyclide/cyclide_blend.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cyclide/blend.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+
+namespace {
+
+constexpr double kConeTol = 1e-9;
+
+// r0 with r0 . n_inf = -2 (6) and r+ with r+ . n_inf = 0: the sphere and the
+// derivative of the normalized family, so that "along +r+" has one meaning.
+Status normalize_cone(const LieCone& in, LieCone& out) {
+  if (!in.r0.allFinite() || !in.r_plus.allFinite()) return Status::not_finite;
+  const double n0 = in.r0.norm(), np = in.r_plus.norm();
+  if (!(n0 > 0) || !(np > 0)) return Status::invalid_argument;
+  if (!(std::abs(lie_dot(in.r0, in.r0)) <= kConeTol * n0 * n0))
+    return Status::not_on_lie_quadric;
+  const double t = dot_n_infinity(in.r0);
+  // A plane as generating sphere (a planar tangent cone, Remark 4.2) has no
+  // circle centre to normalize by; not supported yet.
+  if (!(std::abs(t) > 1e-12 * n0)) return Status::unsupported;
+  LieCone C;
+  C.r0 = (-2.0 / t) * in.r0;
+  C.r_plus = in.r_plus + (0.5 * dot_n_infinity(in.r_plus)) * C.r0;
+  const double rp = C.r_plus.norm();
+  if (!(std::abs(lie_dot(C.r_plus, C.r0)) <= kConeTol * rp * C.r0.norm()))
+    return Status::invalid_argument;  // r+ not tangent to the Lie quadric at r0
+  if (!(lie_dot(C.r_plus, C.r_plus) > kConeTol * rp * rp))
+    return Status::invalid_argument;  // not a real cone: (11) fails
+  if (!(std::abs(C.r0[kER]) > 1e-12 * C.r0.norm()))
+    return Status::invalid_argument;  // a point sphere: the circle is a point
+  out = C;
+  return Status::ok;
+}
+
+// The sign of k in a = k y (a, y parallel neutral vectors), read through a
+// vector q with y . q != 0.
+double factor_sign(const Lie6d& a, const Lie6d& y, const Lie6d& q) {
+  return (lie_dot(a, q) / lie_dot(y, q)) > 0 ? 1.0 : -1.0;
+}
+
+// A piece is singular if its patch pinches: a point sphere in the second
+// family lies on every circle of the first, so on the glued circles (the
+// piece is a spindle or horn cyclide: er's projection onto A^perp is not
+// negative, so A^perp n B contains neutral vectors); or a point sphere of the
+// first family lies inside the arc xi in (0, infinity) (a circle shrinks to
+// a point inside the patch).
+bool pinches(const CyclideBlendPiece& P) {
+  const Matrix6d& th = P.cyclide.theta;
+  const Lie6d er = lie_basis(kER);
+  Lie6d proj = Lie6d::Zero();
+  for (int c : {kE3, kEPlus, kER}) {
+    const Lie6d g = th.col(c);
+    proj += (lie_dot(er, g) / lie_dot(g, g)) * g;
+  }
+  if (!(lie_dot(proj, proj) < -kConeTol * proj.squaredNorm())) return true;
+  // er . a(xi) = A xi^2 + B xi + C (29): a root in (0, infinity)?
+  const double e1 = dot_e_r(Lie6d(th.col(kE1))), e2 = dot_e_r(Lie6d(th.col(kE2)));
+  const double em = dot_e_r(Lie6d(th.col(kEMinus)));
+  const double A = em - e2, B = 2 * e1, C = e2 + em;
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) return false;
+  // Roots have the sign pattern of the coefficients: a positive root exists
+  // iff the signs of A, B, C are not all equal (Descartes), A, C != 0 here.
+  const double scale = std::abs(A) + std::abs(B) + std::abs(C);
+  if (std::abs(A) <= 1e-14 * scale) return -C / B > 0;
+  if (std::abs(B) <= 1e-14 * scale) return A * C < 0;
+  return !((A > 0 && B > 0 && C > 0) || (A < 0 && B < 0 && C < 0));
+}
+
+// The cyclide through x0 (xi = 0) and y0 (xi = infinity) in A = span(x0,
+// xp, y0), whose arc xi in (0, infinity) leaves x0 along +xp: the third
+// anchor z = x0 + mu y0 + nu p at xi = 1, p the pole of the chord x0 y0
+// (p . x0 = p . y0 = 0), nu = sign(x0 . y0) (see SPEC §8h).
+Status make_piece(const Lie6d& x0, const Lie6d& xp, const Lie6d& y0, CyclideBlendPiece& out) {
+  const double g = lie_dot(x0, y0);
+  if (!(std::abs(g) > kConeTol * x0.norm() * y0.norm()))
+    return Status::tangent_generating_spheres;
+  const Lie6d p = -lie_dot(xp, y0) * x0 + g * xp;
+  const double nu = g > 0 ? 1.0 : -1.0;
+  const Lie6d z = x0 - (lie_dot(p, p) / (2.0 * g)) * y0 + nu * p;
+  const Lie6d anchors[3] = {x0, y0, z};
+  CyclideBlendPiece P;
+  if (Status st = dupin_from_vectors(anchors, P.cyclide); st != Status::ok) return st;
+  P.first = x0;
+  P.second = y0;
+  // By construction the arc leaves x0 along +xp: a(xi) = a(0) + 2 xi theta1.
+  const Lie6d a0 = P.cyclide.theta.col(kE2) + P.cyclide.theta.col(kEMinus);
+  if (factor_sign(a0, x0, y0) * lie_dot(Lie6d(P.cyclide.theta.col(kE1)), xp) <= 0)
+    return Status::internal_error;
+  if (pinches(P)) return Status::singular_point;
+  out = P;
+  return Status::ok;
+}
+
+// The side of y0 from which the piece reaches it, along a direction d
+// (d in A, d . y0 = 0): +1 if the patch near xi = infinity lies at y0 + eps d.
+double arrival_side(const CyclideBlendPiece& P, const Lie6d& d) {
+  const Matrix6d& th = P.cyclide.theta;
+  const Lie6d a_inf = th.col(kEMinus) - th.col(kE2);  // a(inf) = -theta2 + theta-
+  // a(xi) / xi^2 = a(inf) + (2 / xi) theta1 + ...: from the side of +theta1.
+  const double s = factor_sign(a_inf, P.second, P.first) * lie_dot(Lie6d(th.col(kE1)), d);
+  return s > 0 ? 1.0 : -1.0;
+}
+
+bool valid_orientation(int o) { return o == 1 || o == -1; }
+
+}  // namespace
+
+Status cone_from_spheres(const Vec3d& m, double rho, const Vec3d& dm, double drho,
+                         LieCone& out) {
+  if (!m.allFinite() || !std::isfinite(rho) || !dm.allFinite() || !std::isfinite(drho))
+    return Status::not_finite;
+  if (rho == 0 || !(dm.norm() > std::abs(drho))) return Status::invalid_argument;
+  LieCone C;
+  if (Status st = lie_vector(oriented_sphere(m, rho), C.r0); st != Status::ok) return st;
+  // d/dh of (4): 2 dm + 2 (m . dm - rho drho) n_inf + 2 drho er.
+  C.r_plus = 2.0 * (m.dot(dm) - rho * drho) * n_infinity();
+  C.r_plus.head<3>() += 2.0 * dm;
+  C.r_plus[kER] += 2.0 * drho;
+  if (!C.r_plus.allFinite()) return Status::numerical_overflow;
+  return normalize_cone(C, out);
+}
+
+Status cone_from_circle(const Vec3d& c, const Vec3d& n, double rho, double slope,
+                        int orientation, LieCone& out) {
+  if (!c.allFinite() || !n.allFinite() || !std::isfinite(rho) || !std::isfinite(slope))
+    return Status::not_finite;
+  if (!(rho > 0) || !(n.norm() > 0) || !valid_orientation(orientation))
+    return Status::invalid_argument;
+  const Vec3d u = n.normalized();
+  // The sphere touching along the circle: centre c + rho slope u (the
+  // generator c + rho e + h (u + slope e) is orthogonal to x - m), radius
+  // rho sqrt(1 + slope^2); moving the circle by h along u moves the centre
+  // by h (1 + slope^2) and the radius by slope sqrt(1 + slope^2).
+  const double w = std::sqrt(1 + slope * slope);
+  const double sigma = orientation;
+  return cone_from_spheres(c + rho * slope * u, sigma * rho * w, (1 + slope * slope) * u,
+                           sigma * slope * w, out);
+}
+
+Status cone_from_circle_apex(const Vec3d& c, const Vec3d& n, double rho, const Vec3d& apex,
+                             int orientation, LieCone& out) {
+  if (!apex.allFinite() || !c.allFinite() || !n.allFinite()) return Status::not_finite;
+  if (!(n.norm() > 0)) return Status::invalid_argument;
+  const Vec3d u = n.normalized();
+  const Vec3d q = apex - c;
+  const double h = q.dot(u);
+  const double size = std::max(q.norm(), std::abs(rho));
+  // The apex must lie on the axis, off the circle's plane.
+  if (!((q - h * u).norm() <= 1e-9 * size) || !(std::abs(h) > 1e-12 * size))
+    return Status::invalid_argument;
+  return cone_from_circle(c, u, rho, -rho / h, orientation, out);
+}
+
+Status cone_from_surface(const Surface& S, double u, int direction, int orientation,
+                         LieCone& out) {
+  if (!valid_orientation(direction) || !valid_orientation(orientation))
+    return Status::invalid_argument;
+  if (!input_ok(u)) return Status::not_finite;
+  Vec3d m, dm;
+  double rho, drho;
+  if (S.kind == SurfaceKind::prcs) {
+    // o = s(u), the spine, and p on the sphere: r^2 = |p - o|^2.
+    CircleFrame<Taylor<double, 1>> F;
+    if (Status st = S.frame<1>(u, F); st != Status::ok) return st;
+    Vec3<Taylor<double, 1>> d = F.p - F.o;
+    const Taylor<double, 1> r = sqrt(d.dot(d));
+    for (int i = 0; i < 3; ++i) {
+      m[i] = F.o[i].c[0];
+      dm[i] = F.o[i].c[1];
+    }
+    rho = r.c[0];
+    drho = r.c[1];
+  } else if (S.kind == SurfaceKind::dupin) {
+    const double* xm = S.dupin.xi_map;
+    const Taylor<double, 1> t = Taylor<double, 1>::variable(u);
+    const Lie6<Taylor<double, 1>> a = S.dupin.cyclide.sphere_xi(
+        Taylor<double, 1>(xm[0]) * t + Taylor<double, 1>(xm[1]),
+        Taylor<double, 1>(xm[2]) * t + Taylor<double, 1>(xm[3]));
+    const Taylor<double, 1> w = dot_n_infinity(a);
+    if (!(std::abs(w.c[0]) > 1e-12 * std::abs(a[kER].c[0]) + 1e-300))
+      return Status::unsupported;  // the family's sphere is a plane here
+    for (int i = 0; i < 3; ++i) {
+      const Taylor<double, 1> x = -a[i] / w;  // (6): m = -a_123 / (a . n_inf)
+      m[i] = x.c[0];
+      dm[i] = x.c[1];
+    }
+    const Taylor<double, 1> r = -a[kER] / w;
+    rho = r.c[0];
+    drho = r.c[1];
+  } else {
+    return Status::not_canal;
+  }
+  const double sd = direction, so = orientation;
+  return cone_from_spheres(m, so * rho, sd * dm, so * sd * drho, out);
+}
+
+Status cone_circle(const LieCone& R, Vec3d& center, Vec3d& normal, double& radius) {
+  LieCone C;
+  if (Status st = normalize_cone(R, C); st != Status::ok) return st;
+  const Vec3d m = 0.5 * C.r0.head<3>(), dm = 0.5 * C.r_plus.head<3>();
+  const double rho = 0.5 * C.r0[kER], drho = 0.5 * C.r_plus[kER];
+  const double mm = dm.squaredNorm();
+  center = m - (rho * drho / mm) * dm;
+  normal = dm / std::sqrt(mm);
+  radius = std::abs(rho) * std::sqrt(std::max(0.0, 1 - drho * drho / mm));
+  return Status::ok;
+}
+
+Status cone_surface(const LieCone& R, double h0, double h1, Surface& out) {
+  LieCone C;
+  if (Status st = normalize_cone(R, C); st != Status::ok) return st;
+  const Vec3d m = 0.5 * C.r0.head<3>(), dm = 0.5 * C.r_plus.head<3>();
+  const double rho = 0.5 * C.r0[kER], drho = 0.5 * C.r_plus[kER];
+  const double mm = dm.squaredNorm();
+  const double q = std::sqrt(1 - drho * drho / mm);
+  // Seed 000 eq. (1) on the linear spine and radius: the circle's centre
+  // moves by dm (1 - drho^2/|dm|^2), its radius by drho q.
+  const Vec3d c0 = m - (rho * drho / mm) * dm;
+  const Vec3d dc = (1 - drho * drho / mm) * dm;
+  Vec3d e = dm.unitOrthogonal();
+  RationalCurve d, n, c;
+  if (Status st = make_line(c0, dc, d); st != Status::ok) return st;
+  if (Status st = make_point(dm, n); st != Status::ok) return st;
+  if (Status st = make_line(c0 + rho * q * e, dc + drho * q * e, c); st != Status::ok) return st;
+  return make_ringed(d, n, c, nullptr, h0, h1, out);
+}
+
+Status cyclide_blend_dimension(const LieCone& R0, const LieCone& S0, int& dim) {
+  LieCone R, S;
+  if (Status st = normalize_cone(R0, R); st != Status::ok) return st;
+  if (Status st = normalize_cone(S0, S); st != Status::ok) return st;
+  if (!(std::abs(lie_dot(R.r0, S.r0)) > kConeTol * R.r0.norm() * S.r0.norm()))
+    return Status::tangent_generating_spheres;  // Lemma 4.6 (i)
+  const Lie6d v[4] = {R.r0, R.r_plus, S.r0, S.r_plus};
+  LieSubspace sum;
+  if (Status st = lie_span(v, 4, sum); st != Status::ok) return st;
+  if (sum.dim < 3) return Status::invalid_argument;  // R = S
+  dim = sum.dim;
+  return Status::ok;
+}
+
+Status cyclide_blend_beta(const LieCone& R0, const LieCone& S0, int branch, double alpha,
+                          double& beta) {
+  if (!valid_orientation(branch)) return Status::invalid_argument;
+  if (!std::isfinite(alpha)) return Status::not_finite;
+  LieCone R, S;
+  if (Status st = normalize_cone(R0, R); st != Status::ok) return st;
+  if (Status st = normalize_cone(S0, S); st != Status::ok) return st;
+  const double g00 = lie_dot(R.r0, S.r0), g0p = lie_dot(R.r0, S.r_plus);
+  const double gp0 = lie_dot(R.r_plus, S.r0), gpp = lie_dot(R.r_plus, S.r_plus);
+  const double k = std::sqrt(lie_dot(R.r_plus, R.r_plus) * lie_dot(S.r_plus, S.r_plus));
+  // (43): (alpha beta g00 + alpha g0p + beta gp0 + gpp)^2 = r+^2 s+^2.
+  const double den = alpha * g00 + gp0;
+  const double scale = std::abs(alpha * g00) + std::abs(gp0);
+  if (!(std::abs(den) > 1e-12 * scale)) return Status::invalid_argument;  // (45)
+  const double b = (branch * k - gpp - alpha * g0p) / den;
+  if (!std::isfinite(b)) return Status::numerical_overflow;
+  beta = b;
+  return Status::ok;
+}
+
+Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double alpha,
+                     CyclideBlend& out) {
+  int dim = 0;
+  if (Status st = cyclide_blend_dimension(R0, S0, dim); st != Status::ok) return st;
+  LieCone R, S;
+  normalize_cone(R0, R);
+  normalize_cone(S0, S);
+  CyclideBlend B;
+  if (dim == 3) {  // Case I: A = R + S, one cyclide from r0 to s0
+    B.pieces = 1;
+    if (Status st = make_piece(R.r0, R.r_plus, S.r0, B.piece[0]); st != Status::ok) return st;
+    // It must reach s0 from the blend's side of S (+s+).
+    if (arrival_side(B.piece[0], S.r_plus) < 0) return Status::blend_folds;
+    out = B;
+    return Status::ok;
+  }
+  // Case II: T = span(r, s) on the hyperbola (43), t0 by (44).
+  double beta = 0;
+  if (Status st = cyclide_blend_beta(R, S, branch, alpha, beta); st != Status::ok) return st;
+  const Lie6d r = alpha * R.r0 + R.r_plus, s = beta * S.r0 + S.r_plus;
+  const Lie6d t0 = lie_dot(s, s) * r - lie_dot(s, r) * s;
+  if (!t0.allFinite()) return Status::numerical_overflow;
+  // (34), (35): t0 . r0 != 0 and t0 . s0 != 0 (off the asymptotes).
+  if (!(std::abs(lie_dot(t0, R.r0)) > kConeTol * t0.norm() * R.r0.norm()) ||
+      !(std::abs(lie_dot(t0, S.r0)) > kConeTol * t0.norm() * S.r0.norm()))
+    return Status::invalid_argument;
+  B.pieces = 2;
+  B.branch = branch;
+  B.alpha = alpha;
+  B.beta = beta;
+  B.joint = t0;
+  if (Status st = make_piece(R.r0, R.r_plus, t0, B.piece[0]); st != Status::ok) return st;
+  if (Status st = make_piece(S.r0, S.r_plus, t0, B.piece[1]); st != Status::ok) return st;
+  // At the joint the pieces must arrive from opposite sides of t0 (along r,
+  // which lies in T and is orthogonal to t0 by (42)).
+  if (arrival_side(B.piece[0], r) * arrival_side(B.piece[1], r) > 0)
+    return Status::blend_folds;
+  out = B;
+  return Status::ok;
+}
+
+Status cyclide_blend_surface(const CyclideBlend& B, int i, Surface& out) {
+  if (i < 0 || i >= B.pieces) return Status::invalid_argument;
+  DupinView V;
+  V.cyclide = B.piece[i].cyclide;
+  // u in [0, 1] -> xi = u / (1 - u): homogeneous (u : 1 - u).
+  const double xm[4] = {1, 0, -1, 1};
+  std::copy(xm, xm + 4, V.xi_map);
+  return make_dupin_surface(V, 0.0, 1.0, out);
+}
+
+namespace {
+Status join_report(const Surface& A, double uA, const Surface& B, double uB, int n,
+                   double& gap, double& angle, double& scale) {
+  ContinuityReport rep;
+  if (Status st = continuity_report(A, uA, 1.0, B, uB, 1, nullptr, n, rep); st != Status::ok)
+    return st;
+  gap = rep.max_gap;
+  angle = rep.max_normal_angle;
+  scale = std::max(scale, rep.point_scale);
+  return Status::ok;
+}
+}  // namespace
+
+Status cyclide_blend_continuity(const LieCone& R, const LieCone& S, const CyclideBlend& B,
+                                int n, CyclideBlendContinuity& out) {
+  if (n < 1 || B.pieces < 1 || B.pieces > 2) return Status::invalid_argument;
+  Surface cone_r, cone_s, p0, p1;
+  if (Status st = cone_surface(R, -1.0, 0.0, cone_r); st != Status::ok) return st;
+  if (Status st = cone_surface(S, -1.0, 0.0, cone_s); st != Status::ok) return st;
+  if (Status st = cyclide_blend_surface(B, 0, p0); st != Status::ok) return st;
+  CyclideBlendContinuity C;
+  if (Status st = join_report(cone_r, 0.0, p0, 0.0, n, C.gap[0], C.angle[0], C.scale);
+      st != Status::ok)
+    return st;
+  if (B.pieces == 1) {
+    if (Status st = join_report(cone_s, 0.0, p0, 1.0, n, C.gap[2], C.angle[2], C.scale);
+        st != Status::ok)
+      return st;
+  } else {
+    if (Status st = cyclide_blend_surface(B, 1, p1); st != Status::ok) return st;
+    if (Status st = join_report(p0, 1.0, p1, 1.0, n, C.gap[1], C.angle[1], C.scale);
+        st != Status::ok)
+      return st;
+    if (Status st = join_report(cone_s, 0.0, p1, 0.0, n, C.gap[2], C.angle[2], C.scale);
+        st != Status::ok)
+      return st;
+  }
+  out = C;
+  return Status::ok;
+}
+
+}  // namespace v0
+}  // namespace cyclide
