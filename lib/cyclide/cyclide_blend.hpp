@@ -107,6 +107,21 @@ Status cyclide_blend_beta(const LieCone& R, const LieCone& S, int branch, double
 Status cyclide_blend(const LieCone& R, const LieCone& S, int branch, double alpha,
                      CyclideBlend& out);
 
+// Algorithm 2 with its free parameter chosen: Case I as above; Case II
+// scans phi in (-pi/2, pi/2), alpha = tan(phi), at `samples` points on both
+// branches (45's asymptote and failing points skipped), keeps the blend whose
+// circles vary least (quality = min radius / max radius over 17 circles of
+// the first family and 16 of the second per piece: both principal
+// curvatures of a cyclide are constant along its circles) and refines phi by golden-section search between the best sample's
+// neighbours. *quality (may be null) receives the chosen blend's quality.
+// When no sample gives a valid blend: blend_folds if some sample folded,
+// otherwise singular_point (every sample pinched). samples in [8, 4096].
+Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
+                          int samples = 64, double* quality = nullptr);
+// The quality measure above (min / max circle radius of the patches; 0 if
+// a circle runs through infinity).
+Status cyclide_blend_quality(const CyclideBlend& B, double& quality);
+
 // The patch of piece i as a circle-family surface (u in [0, 1] -> xi in
 // [0, infinity], v = zeta).
 Status cyclide_blend_surface(const CyclideBlend& B, int i, Surface& out);

@@ -79,7 +79,11 @@ bool pinches(const CyclideBlendPiece& P) {
 // xp, y0), whose arc xi in (0, infinity) leaves x0 along +xp: the third
 // anchor z = x0 + mu y0 + nu p at xi = 1, p the pole of the chord x0 y0
 // (p . x0 = p . y0 = 0), nu = sign(x0 . y0) (see SPEC §8h).
-Status make_piece(const Lie6d& x0, const Lie6d& xp, const Lie6d& y0, CyclideBlendPiece& out) {
+Status make_piece(const Lie6d& x0_in, const Lie6d& xp_in, const Lie6d& y0_in,
+                  CyclideBlendPiece& out) {
+  // Positive rescaling keeps every side and sign below; unit vectors keep
+  // the anchors well scaled.
+  const Lie6d x0 = x0_in.normalized(), xp = xp_in.normalized(), y0 = y0_in.normalized();
   const double g = lie_dot(x0, y0);
   if (!(std::abs(g) > kConeTol * x0.norm() * y0.norm()))
     return Status::tangent_generating_spheres;
@@ -89,8 +93,8 @@ Status make_piece(const Lie6d& x0, const Lie6d& xp, const Lie6d& y0, CyclideBlen
   const Lie6d anchors[3] = {x0, y0, z};
   CyclideBlendPiece P;
   if (Status st = dupin_from_vectors(anchors, P.cyclide); st != Status::ok) return st;
-  P.first = x0;
-  P.second = y0;
+  P.first = x0_in;
+  P.second = y0_in;
   // By construction the arc leaves x0 along +xp: a(xi) = a(0) + 2 xi theta1.
   const Lie6d a0 = P.cyclide.theta.col(kE2) + P.cyclide.theta.col(kEMinus);
   if (factor_sign(a0, x0, y0) * lie_dot(Lie6d(P.cyclide.theta.col(kE1)), xp) <= 0)
@@ -238,6 +242,9 @@ Status cyclide_blend_dimension(const LieCone& R0, const LieCone& S0, int& dim) {
   LieCone R, S;
   if (Status st = normalize_cone(R0, R); st != Status::ok) return st;
   if (Status st = normalize_cone(S0, S); st != Status::ok) return st;
+  // One generating sphere for both cones: nothing to blend (R = S) or two
+  // cones touching one sphere along one circle (not G1-joinable).
+  if ((R.r0 - S.r0).norm() <= 1e-12 * R.r0.norm()) return Status::invalid_argument;
   if (!(std::abs(lie_dot(R.r0, S.r0)) > kConeTol * R.r0.norm() * S.r0.norm()))
     return Status::tangent_generating_spheres;  // Lemma 4.6 (i)
   const Lie6d v[4] = {R.r0, R.r_plus, S.r0, S.r_plus};
@@ -317,6 +324,104 @@ Status cyclide_blend_surface(const CyclideBlend& B, int i, Surface& out) {
   const double xm[4] = {1, 0, -1, 1};
   std::copy(xm, xm + 4, V.xi_map);
   return make_dupin_surface(V, 0.0, 1.0, out);
+}
+
+namespace {
+// Circumradius of three points (infinite for collinear ones).
+double circumradius(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const double ab = (a - b).norm(), bc = (b - c).norm(), ca = (c - a).norm();
+  const double twice_area = (b - a).cross(c - a).norm();
+  return twice_area > 0 ? ab * bc * ca / (2 * twice_area) : HUGE_VAL;
+}
+}  // namespace
+
+Status cyclide_blend_quality(const CyclideBlend& B, double& quality) {
+  double lo = HUGE_VAL, hi = 0;
+  auto take = [&](double r) {
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+  };
+  for (int i = 0; i < B.pieces; ++i) {
+    Surface P;
+    if (Status st = cyclide_blend_surface(B, i, P); st != Status::ok) return st;
+    // The patch's circles of the first family (xi-circles) ...
+    for (int k = 0; k <= 16; ++k) {
+      Vec3d c, n;
+      double r2;
+      if (Status st = P.circle(k / 16.0, c, n, r2); st != Status::ok) return st;
+      take(std::sqrt(r2));
+    }
+    // ... and of the second (zeta-lines, through xi = 0, 1, infinity): a
+    // piece that turns sharply has small ones.
+    const DupinCyclide& D = B.piece[i].cyclide;
+    for (int k = 0; k < 16; ++k) {
+      const double z = std::tan(3.14159265358979324 * ((k + 0.5) / 16 - 0.5));
+      DupinPoint p[3];
+      const HomogeneousParameter xi[3] = {{0, 1}, {1, 1}, {1, 0}};
+      bool finite = true;
+      for (int j = 0; j < 3; ++j)
+        finite &= dupin_eval_homogeneous(D, xi[j], {z, 1}, 0.0, p[j]) == Status::ok;
+      take(finite ? circumradius(p[0].point, p[1].point, p[2].point) : HUGE_VAL);
+    }
+  }
+  quality = (hi > 0 && std::isfinite(hi)) ? lo / hi : 0.0;
+  return Status::ok;
+}
+
+Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out, int samples,
+                          double* quality) {
+  if (samples < 8 || samples > 4096) return Status::invalid_argument;
+  int dim = 0;
+  if (Status st = cyclide_blend_dimension(R, S, dim); st != Status::ok) return st;
+  if (dim == 3) {
+    CyclideBlend B;
+    if (Status st = cyclide_blend(R, S, 1, 0.0, B); st != Status::ok) return st;
+    double q = 0;
+    if (Status st = cyclide_blend_quality(B, q); st != Status::ok) return st;
+    if (quality) *quality = q;
+    out = B;
+    return Status::ok;
+  }
+  const double half_pi = 2 * std::atan(1.0);
+  auto phi_of = [&](int k) { return -half_pi + 2 * half_pi * (k + 0.5) / samples; };
+  // The quality at phi on a branch, or -1 where no valid blend exists.
+  bool folded = false;
+  auto score = [&](int branch, double phi, CyclideBlend* keep) {
+    CyclideBlend B;
+    const Status st = cyclide_blend(R, S, branch, std::tan(phi), B);
+    folded |= st == Status::blend_folds;
+    double q = -1;
+    if (st != Status::ok || cyclide_blend_quality(B, q) != Status::ok) return -1.0;
+    if (keep) *keep = B;
+    return q;
+  };
+  int best_branch = 0, best_k = -1;
+  double best = -1;
+  for (int branch : {1, -1})
+    for (int k = 0; k < samples; ++k) {
+      const double q = score(branch, phi_of(k), nullptr);
+      if (q > best) best = q, best_branch = branch, best_k = k;
+    }
+  if (best_k < 0) return folded ? Status::blend_folds : Status::singular_point;
+  // Golden-section refinement on [phi_{k-1}, phi_{k+1}] (invalid points score -1).
+  double a = phi_of(std::max(best_k - 1, 0)), b = phi_of(std::min(best_k + 1, samples - 1));
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  double f1 = score(best_branch, x1, nullptr), f2 = score(best_branch, x2, nullptr);
+  for (int it = 0; it < 30; ++it) {
+    if (f1 >= f2) {
+      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = score(best_branch, x1, nullptr);
+    } else {
+      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = score(best_branch, x2, nullptr);
+    }
+  }
+  CyclideBlend B;
+  double q = score(best_branch, f1 >= f2 ? x1 : x2, &B);
+  if (q < best) q = score(best_branch, phi_of(best_k), &B);  // never worse than the scan
+  if (!(q >= 0)) return Status::internal_error;
+  if (quality) *quality = q;
+  out = B;
+  return Status::ok;
 }
 
 namespace {

@@ -214,9 +214,13 @@ Status witt_extension(const Lie6d* u, const Lie6d* w, int k, Matrix6d& T, double
   }
   if (span_svd(U).rank < k || span_svd(W).rank < k) return Status::rank_deficient;
   const SmallMatrix Gu = gram(U), Gw = gram(W);
-  const double gram_scale = std::max(1.0, Gw.cwiseAbs().maxCoeff());
-  if (!((Gu - Gw).cwiseAbs().maxCoeff() <= kWittGramTol * gram_scale))
-    return Status::not_isometric;
+  // Relative to the sizes of the vectors on both sides: neutral vectors of
+  // large norm have inner products of order 1 with rounding of order |w|^2.
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      const double size = std::max(1.0, W.col(i).norm() * W.col(j).norm());
+      if (!(std::abs(Gu(i, j) - Gw(i, j)) <= kWittGramTol * size)) return Status::not_isometric;
+    }
   // One change of basis for both sides, from the Gram matrix alone: its
   // regular part orthonormalized, then the radical.
   const Diagonalized D = diagonalize(0.5 * (Gu + Gw), kLieZeroTol);
