@@ -16,7 +16,8 @@ using namespace cyclide;
 #define CYC_SAME(c, s) static_assert(int(c) == int(Status::s), #c)
 static_assert(CYC_SURFACE_PRCS == int(SurfaceKind::prcs) &&
                   CYC_SURFACE_PRRS == int(SurfaceKind::prrs) &&
-                  CYC_SURFACE_RINGED == int(SurfaceKind::ringed),
+                  CYC_SURFACE_RINGED == int(SurfaceKind::ringed) &&
+                  CYC_SURFACE_DUPIN == int(SurfaceKind::dupin),
               "surface kinds");
 CYC_SAME(CYC_OK, ok);
 CYC_SAME(CYC_E_NULL_ARGUMENT, null_argument);
