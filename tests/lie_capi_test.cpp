@@ -97,6 +97,21 @@ const double kZetas[] = {-5.0, -1.0, 0.0, 0.5, 1.0, 3.0};
 
 }  // namespace
 
+// Statuses 119-126 have names (cyc_status_name missed them before this
+// section existed: fuzz_lie's first run).
+TEST(LieCapiStatus, Names) {
+  EXPECT_STREQ(cyc_status_name(CYC_E_SPHERE_PENCIL), "CYC_E_SPHERE_PENCIL");
+  EXPECT_STREQ(cyc_status_name(CYC_E_NO_TOUCHING_SPHERE), "CYC_E_NO_TOUCHING_SPHERE");
+  EXPECT_STREQ(cyc_status_name(CYC_E_SINGLE_TOUCHING_SPHERE), "CYC_E_SINGLE_TOUCHING_SPHERE");
+  EXPECT_STREQ(cyc_status_name(CYC_E_DEGENERATE_CYCLIDE), "CYC_E_DEGENERATE_CYCLIDE");
+  EXPECT_STREQ(cyc_status_name(CYC_E_NOT_ISOMETRIC), "CYC_E_NOT_ISOMETRIC");
+  EXPECT_STREQ(cyc_status_name(CYC_E_NOT_ON_LIE_QUADRIC), "CYC_E_NOT_ON_LIE_QUADRIC");
+  EXPECT_STREQ(cyc_status_name(125), "CYC_E_POINT_AT_INFINITY");
+  EXPECT_STREQ(cyc_status_name(CYC_E_TANGENT_GENERATING_SPHERES),
+               "CYC_E_TANGENT_GENERATING_SPHERES");
+  EXPECT_STREQ(cyc_status_name(127), "CYC_E_UNKNOWN");
+}
+
 // ------------------------------------------------------------ Lie spheres
 
 TEST_F(LieCapi, VectorsAndSpheresRoundTrip) {
