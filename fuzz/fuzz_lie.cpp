@@ -311,6 +311,8 @@ void check_sphere_out(const char* fn, const cyc_lie_sphere& o) {
 void op_sphere(State& st) {
   bool moderate = true;
   const cyc_lie_sphere s = lie_sphere(st.in, moderate);
+  FZ_LOG("    sphere kind %d m (%a, %a, %a) rho %a n (%a, %a, %a) lambda %a", s.kind, s.m[0],
+         s.m[1], s.m[2], s.rho, s.n[0], s.n[1], s.n[2], s.lambda);
   double x[6];
   fz::fill_sentinel(x, 6);
   const int r = cyc_lie_vector(st.ctx, &s, x);
@@ -521,6 +523,9 @@ void op_cyclide(State& st) {
   cyc_lie_sphere s[3];
   bool moderate = true;
   triple(st, s, moderate);
+  for (const auto& x : s)
+    FZ_LOG("    sphere kind %d m (%.17g, %.17g, %.17g) rho %.17g n (%.17g, %.17g, %.17g) lambda %.17g",
+           x.kind, x.m[0], x.m[1], x.m[2], x.rho, x.n[0], x.n[1], x.n[2], x.lambda);
   int sig[3] = {-7, -7, -7};
   const int rc = cyc_dupin_classify_spheres(st.ctx, in.rarely() ? nullptr : s, sig);
   st.check("cyc_dupin_classify_spheres", rc);
