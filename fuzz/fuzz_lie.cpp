@@ -200,6 +200,15 @@ bool make_transform(State& st, cyc_lie_transform& T, bool& lie_expected) {
       if (!(std::abs(r) >= 1e-3)) moderate = false;
       s = cyc_lie_transform_inversion(st.ctx, c, r, &T);
       fn = "cyc_lie_transform_inversion";
+      if (s == CYC_OK && moderate) {
+        // The core composes T(c) S(r) U S(1/r) T(-c): intermediate entries
+        // up to B = (1 + |c|^2)^2 max(r, 1/r)^2 whose rounding (eps B^2)
+        // cancels in the result; expect Lie only where that stays below
+        // 1e-9 max(1, max|M|^2) (crash-27ee7a0b: radius 1e-3 far out).
+        const double q = 1 + fz::dot3(c, c), k = std::max(std::abs(r), 1 / std::abs(r));
+        const double B = q * q * k * k, big = max_abs(T.m, 36);
+        if (!(1e-16 * B * B <= 1e-9 * std::max(1.0, big * big))) moderate = false;
+      }
       break;
     }
     case 5:
