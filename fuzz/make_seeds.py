@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the seed corpora fuzz/corpus/fuzz_create/, fuzz_eval/, fuzz_darboux/,
-fuzz_lines/, fuzz_blend/, fuzz_ringed/, fuzz_implicit/ and fuzz_skin/.
+fuzz_lines/, fuzz_blend/, fuzz_ringed/, fuzz_implicit/, fuzz_skin/ and fuzz_lie/.
 
 The harnesses read their input through FuzzedDataProvider integral reads
 only (fuzz_common.hpp): ConsumeIntegralInRange(lo, hi) takes
@@ -2590,6 +2590,163 @@ def skin_seeds():
     return seeds
 
 
+# ---------------------------------------------------------------- fuzz_lie
+
+
+class LieEncoder(Encoder):
+    """Mirrors fuzz_lie.cpp: the allocator mode, the handler flag, then the
+    ops (nops spliced in after the header, like CreateEncoder). Numbers are
+    written as fuzz_common.hpp coord() small integers (mode 3) or
+    param() sixteenths (mode 0) where possible."""
+
+    def __init__(self, alloc_mode=1, fail_at=0, fail_after=False, handler=True):
+        super().__init__()
+        self.ops = 0
+        self.range(0, 2, alloc_mode)
+        if alloc_mode == 2:
+            self.range(0, 7, fail_at)
+            self.flag(fail_after)
+        self.flag(handler)
+        self.nops_at = len(self.consumed)
+
+    def finish(self):
+        body = self.consumed[self.nops_at:]
+        self.consumed = self.consumed[:self.nops_at]
+        assert 1 <= self.ops <= 16
+        self.range(1, 16, self.ops)
+        self.consumed.extend(body)
+        return self.data()
+
+    def op(self, code):
+        self.ops += 1
+        self.range(0, 9, code)
+
+    def coord(self, v):
+        if v == int(v) and -4 <= v <= 4:
+            self.range(0, 3, 3)
+            self.range(-4, 4, int(v))
+        else:
+            self.range(0, 3, 1)
+            self.wild(v)
+
+    def param(self, v):
+        assert v * 16 == int(v * 16) and abs(v) <= 4, v
+        self.range(0, 3, 0)
+        self.range(-64, 64, int(v * 16))
+
+    def sphere(self, m, rho):
+        self.range(0, 15, 0)  # CYC_LIE_SPHERE
+        for v in list(m) + [rho, 0, 0, 0, 0]:
+            self.coord(v)
+
+    def torus_triple(self, R=3, r=1, angles=(0, 2, 4)):
+        self.range(0, 3, 1)
+        self.coord(R)
+        self.coord(r)
+        for a in angles:
+            self.coord(a)
+        for _ in range(3):
+            self.flag(True)  # z = 0
+            self.flag(True)  # rho = r
+
+    def raw_triple(self, spheres):
+        self.range(0, 3, 0)
+        for m, rho in spheres:
+            self.sphere(m, rho)
+
+    def cyclide(self, triple, how=0):
+        self.op(4)
+        triple(self)
+        self.rarely(False)
+        self.range(0, 2, how)
+
+    def operand(self, derive=5, d=0.25):
+        # pick(): one cyclide stored, so range(0, 0) consumes nothing.
+        self.range(0, 5, derive)
+        if derive == 0:  # an offset cyclide at distance d
+            self.param(d)
+
+    def eval(self, xi, zeta, offset=None, derive=5):
+        self.op(6)
+        self.operand(derive)
+        self.param(xi)
+        self.param(zeta)
+        self.flag(offset is None)
+        if offset is not None:
+            self.param(offset)
+
+    def grid(self, xs, zs, derive=5):
+        self.op(7)
+        self.operand(derive)
+        self.range(0, 5, len(xs))
+        self.range(0, 5, len(zs))
+        for v in (list(xs) + [0] * 5)[:5]:
+            self.param(v)
+        for v in (list(zs) + [0] * 5)[:5]:
+            self.param(v)
+        self.flag(True)      # offset 0
+        self.rarely(False)   # points wanted
+        self.flag(True)      # normals wanted
+
+    def surface(self, u0=-1, v=0.5):
+        self.op(8)
+        self.operand()
+        self.flag(False)
+        self.flag(False)
+        self.param(u0)
+        self.flag(True)       # u1 = u0 + 1
+        self.range(0, 8, 4)
+        self.param(v)
+        self.flag(True)
+
+    def transform_inversion(self, c, r):
+        self.op(1)
+        self.range(0, 7, 4)
+        for v in c:
+            self.coord(v)
+        self.coord(r)
+        self.flag(True)
+        self.sphere((3, 0, 0), 1)
+
+
+def lie_seeds():
+    seeds = {}
+    # The torus of tests/lie_capi_test.cpp-like spheres on a circle: build,
+    # evaluate, a grid, an offset, swapped families, the surface handle.
+    e = LieEncoder()
+    e.cyclide(LieEncoder.torus_triple)
+    e.eval(0.25, -0.5)
+    e.eval(1.5, 2, offset=0.25)
+    e.eval(0.5, 0.75, derive=0)
+    e.eval(-2, 0.5, derive=1)
+    e.grid([0, 0.5, -1, 2], [0, 1, -0.25])
+    e.surface()
+    seeds["seed-torus"] = e.finish()
+    # A cylinder (class I): a point at infinity at xi = 1/2 fails a grid.
+    e = LieEncoder()
+    e.cyclide(lambda enc: enc.raw_triple([((0, 0, 0), 1), ((0, 0, 1), 1), ((0, 0, 2), 1)]))
+    e.grid([0, 0.25, 0.5], [0, 1])
+    e.eval(0.5, 0.25)
+    seeds["seed-cylinder"] = e.finish()
+    # The degenerate cases of sec. 3.1.
+    for name, triple in [
+            ("pencil", [((0, 0, 1), 1), ((0, 0, 2), 2), ((0, 0, -1), -1)]),
+            ("single", [((0, 0, 0), 1), ((3, 0, 0), -2), ((0, 4, 0), 1)]),
+            ("equal", [((3, 0, 0), 1), ((3, 0, 0), 1), ((-3, 0, 0), 1)])]:
+        e = LieEncoder()
+        e.cyclide(lambda enc, t=triple: enc.raw_triple(t))
+        seeds["seed-" + name] = e.finish()
+    # Transformations, and allocation failure of the surface handle.
+    e = LieEncoder()
+    e.transform_inversion((1, 2, -1), 2)
+    seeds["seed-inversion"] = e.finish()
+    e = LieEncoder(alloc_mode=2, fail_at=1)  # 0 is the context
+    e.cyclide(LieEncoder.torus_triple)
+    e.surface()
+    seeds["seed-alloc-fail"] = e.finish()
+    return seeds
+
+
 def write(dirname, seeds):
     path = os.path.join(HERE, "corpus", dirname)
     os.makedirs(path, exist_ok=True)
@@ -2637,4 +2794,5 @@ if __name__ == "__main__":
     write("fuzz_ringed", ringed_seeds())
     write("fuzz_implicit", implicit_seeds())
     write("fuzz_skin", skin_seeds())
+    write("fuzz_lie", lie_seeds())
     write_dictionary()

@@ -16,6 +16,7 @@
 
 #include "cyclide/cyclide.h"
 #include "cyclide/darboux_classify.hpp"
+#include "cyclide/dupin.hpp"
 #include "cyclide/implicitize.hpp"
 #include "cyclide/sphere_skin.hpp"
 #include "cyclide/surface.hpp"
@@ -773,5 +774,50 @@ TEST(AllocFreeSkin, EvalGridTwistLambdaInfo) {
   EXPECT_EQ(heap.allocations, 0);
   EXPECT_EQ(heap.frees, 0);
   cyc_sphere_skin_destroy(ctx, h);
+  cyc_context_destroy(ctx);
+}
+
+// Seed 003's Dupin cyclides: the core's dupin_eval and the C ABI's
+// cyc_dupin_eval, cyc_dupin_eval_grid (validation of the value included)
+// and their errors allocate nothing.
+TEST(AllocFreeLie, DupinEvalAndGrid) {
+  using namespace cyclide;
+  const LieSphere s[3] = {oriented_sphere({3, 0, 0}, 1), oriented_sphere({0, 3, 0}, 1),
+                          oriented_sphere({-3, 0, 0}, 1)};
+  DupinCyclide D;
+  ASSERT_EQ(dupin_from_spheres(s, D), Status::ok);
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  cyc_lie_sphere c[3];
+  for (int i = 0; i < 3; ++i) {
+    c[i].kind = CYC_LIE_SPHERE;
+    c[i].m[0] = s[i].m.x(), c[i].m[1] = s[i].m.y(), c[i].m[2] = s[i].m.z();
+    c[i].rho = 1;
+    c[i].n[0] = c[i].n[1] = c[i].n[2] = 0;
+    c[i].lambda = 0;
+  }
+  cyc_dupin C;
+  ASSERT_EQ(cyc_dupin_from_spheres(ctx, c, &C), CYC_OK);
+  double xs[16], zs[16];
+  for (int i = 0; i < 16; ++i) xs[i] = -4 + 0.5 * i, zs[i] = -3 + 0.4 * i;
+  std::vector<double> P(3 * 256), N(3 * 256);
+  cyc_dupin bad_value = C;
+  bad_value.theta[3] += 0.5;
+  int bad = 0;
+  DupinPoint Q;
+  cyc_dupin_point R;
+  const Heap heap = measure([&] {
+    for (int r = 0; r < 3; ++r) {
+      bad += dupin_eval(D, xs[r], zs[r + 1], 0.1 * r, Q) != Status::ok;
+      bad += cyc_dupin_eval(ctx, &C, xs[r], zs[r + 1], 0.1 * r, &R) != CYC_OK;
+      bad += cyc_dupin_eval_grid(ctx, &C, xs, 16, zs, 16, 0.0, P.data(), N.data()) != CYC_OK;
+      bad += cyc_dupin_eval(ctx, &bad_value, 0, 0, 0, &R) != CYC_E_INVALID_ARGUMENT;
+      bad += cyc_dupin_eval_grid(ctx, &C, xs, 16, zs, 16, NAN, P.data(), nullptr) !=
+             CYC_E_NOT_FINITE;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(heap.allocations, 0);
+  EXPECT_EQ(heap.frees, 0);
   cyc_context_destroy(ctx);
 }

@@ -16,7 +16,8 @@ using namespace cyclide;
 #define CYC_SAME(c, s) static_assert(int(c) == int(Status::s), #c)
 static_assert(CYC_SURFACE_PRCS == int(SurfaceKind::prcs) &&
                   CYC_SURFACE_PRRS == int(SurfaceKind::prrs) &&
-                  CYC_SURFACE_RINGED == int(SurfaceKind::ringed),
+                  CYC_SURFACE_RINGED == int(SurfaceKind::ringed) &&
+                  CYC_SURFACE_DUPIN == int(SurfaceKind::dupin),
               "surface kinds");
 CYC_SAME(CYC_OK, ok);
 CYC_SAME(CYC_E_NULL_ARGUMENT, null_argument);
@@ -108,7 +109,10 @@ const char* cyc_status_name(int status) {
     case CYC_E_AT_INVERSION_CENTER: case CYC_E_NOT_PARABOLIC: case CYC_E_EMPTY_REAL_LOCUS:
     case CYC_E_TOO_FEW_LINES: case CYC_E_NO_NORMAL_FORM: case CYC_E_NOT_PYTHAGOREAN:
     case CYC_E_INTERSECTING_CIRCLES: case CYC_E_NESTED_SPHERES:
-    case CYC_E_CURVATURE_RADIUS_TOO_LARGE:
+    case CYC_E_CURVATURE_RADIUS_TOO_LARGE: case CYC_E_SPHERE_PENCIL:
+    case CYC_E_NO_TOUCHING_SPHERE: case CYC_E_SINGLE_TOUCHING_SPHERE:
+    case CYC_E_DEGENERATE_CYCLIDE: case CYC_E_NOT_ISOMETRIC: case CYC_E_NOT_ON_LIE_QUADRIC:
+    case CYC_E_POINT_AT_INFINITY: case CYC_E_TANGENT_GENERATING_SPHERES:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));

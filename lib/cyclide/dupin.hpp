@@ -95,7 +95,11 @@ Vec3<S> euclidean_point(const Lie6<S>& c) {
 // sphere_pencil (dim A = 2, Case I), no_touching_sphere (A = R^{1,2}),
 // single_touching_sphere (A = R^{1,1,1}); not_on_lie_quadric for a
 // non-neutral vector, invalid_argument for two equal spheres, not_finite.
-// *span_signature (may be null) receives A's signature when dim A = 3.
+// *span_signature (may be null) receives A's signature when dim A = 3. The
+// case follows from the products a_i . a_j of the normalized inputs (a
+// product within 64 eps of its terms counts as zero), not from eigenvalues
+// on a Euclidean-orthonormal basis, which shrink like 1/|m|^4 for spheres
+// far from the origin.
 Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature = nullptr);
 
 // Algorithm 1 (corrected) through the reference pair (28) and a Lie

@@ -57,27 +57,59 @@ Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature) {
   Lie6d b[3];
   for (int i = 0; i < 3; ++i) {
     if (!a[i].allFinite()) return Status::not_finite;
-    const double len = a[i].norm();
-    if (!(len > 0)) return Status::invalid_argument;
-    b[i] = a[i] / len;
+    const double big = a[i].cwiseAbs().maxCoeff();  // no overflow of |a_i|^2
+    if (!(big > 0)) return Status::invalid_argument;
+    b[i] = a[i] / big;
+    b[i] /= b[i].norm();
     if (!(std::abs(lie_dot(b[i], b[i])) <= kLieQuadricTol)) return Status::not_on_lie_quadric;
   }
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
       if (parallel(b[i], b[j])) return Status::invalid_argument;  // the same Lie sphere
-  LieSubspace A;
-  if (Status st = lie_span(b, 3, A); st != Status::ok) return st;
-  if (A.dim < 3) return Status::sphere_pencil;  // Case I: A = R^{0,2,0}
-  if (span_signature) *span_signature = A.signature;
-  if (A.signature == Signature{2, 0, 1}) return Status::ok;           // Case II.3
-  if (A.signature == Signature{1, 0, 2}) return Status::no_touching_sphere;  // II.1
-  return Status::single_touching_sphere;  // II.2: A = R^{1,1,1}
+  // For three distinct neutral vectors the span's signature follows from
+  // the products g_ij = b_i . b_j alone (Gram matrix with zero diagonal):
+  // all zero is a pencil (a 2-plane, Case I; R^{4,2} has no 3-dimensional
+  // totally isotropic subspace), one or two zero is R^{1,1,1}, else the
+  // sign of g12 g13 g23 decides (< 0: R^{2,1}, > 0: R^{1,2}). A product is
+  // zero when it is within the rounding of its terms (64 eps sum |b_ik
+  // b_jk|): eigenvalues of the Gram matrix of a Euclidean-orthonormal
+  // basis (lie_span) scale like 1/|m|^4 for spheres far from the origin and
+  // fell below kLieZeroTol for a torus translated by ~400 (fuzz_lie).
+  constexpr double kRounding = 64 * 2.220446049250313e-16;
+  int zeros = 0, negatives = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j) {
+      const double g = lie_dot(b[i], b[j]);
+      const double terms = b[i].cwiseProduct(b[j]).cwiseAbs().sum();
+      if (std::abs(g) <= kRounding * terms) ++zeros;
+      else negatives += g < 0;
+    }
+  Signature sig;
+  Status st;
+  if (zeros == 3) {
+    sig = {0, 2, 0};
+    st = Status::sphere_pencil;
+  } else if (zeros > 0) {
+    sig = {1, 1, 1};
+    st = Status::single_touching_sphere;  // II.2
+  } else if (negatives % 2 == 1) {  // g12 g13 g23 < 0
+    sig = {2, 0, 1};
+    st = Status::ok;  // II.3
+  } else {
+    sig = {1, 0, 2};
+    st = Status::no_touching_sphere;  // II.1
+  }
+  if (span_signature && st != Status::sphere_pencil) *span_signature = sig;
+  return st;
 }
 
 Status dupin_from_vectors(const Lie6d (&a)[3], DupinCyclide& out) {
   if (Status st = classify_sphere_triple(a); st != Status::ok) return st;
   Lie6d b[3];
-  for (int i = 0; i < 3; ++i) b[i] = a[i] / a[i].norm();
+  for (int i = 0; i < 3; ++i) {
+    b[i] = a[i] / a[i].cwiseAbs().maxCoeff();
+    b[i] /= b[i].norm();
+  }
   const double g12 = lie_dot(b[0], b[1]), g13 = lie_dot(b[0], b[2]), g23 = lie_dot(b[1], b[2]);
   // Scale the inputs to the Gram matrix of a0(0) = e2 + e-, a0(inf) = -e2 + e-,
   // a0(1) = e1 + e- (products -2, -1, -1): lambda1^2 > 0 is exactly the

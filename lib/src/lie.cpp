@@ -276,9 +276,10 @@ LieSphere lie_point(const Vec3d& m) { return oriented_sphere(m, 0.0); }
 LieSphere oriented_plane(const Vec3d& n, double lambda) {
   LieSphere s;
   s.kind = LieSphereKind::plane;
-  const double len = n.norm();
-  s.n = len > 0 ? Vec3d(n / len) : n;
-  s.lambda = len > 0 ? lambda / len : lambda;
+  const double big = n.cwiseAbs().maxCoeff();  // no overflow of |n|^2 (see lie_vector)
+  const double len = big > 0 ? (n / big).norm() : 0.0;
+  s.n = len > 0 ? Vec3d(n / big / len) : n;
+  s.lambda = len > 0 ? lambda / big / len : lambda;
   return s;
 }
 
@@ -295,10 +296,14 @@ Status lie_vector(const LieSphere& s, Lie6d& out) {
     }
     case LieSphereKind::plane: {
       if (!s.n.allFinite() || !std::isfinite(s.lambda)) return Status::not_finite;
-      const double len = s.n.norm();
-      if (!(len > 0)) return Status::invalid_argument;
-      const Vec3d n = s.n / len;
-      const double lambda = s.lambda / len;
+      // |n| through n / max|n_i|: n.norm() overflows for |n_i| ~ 1e155 (n /
+      // inf = 0 gave the non-neutral -er; fuzz_lie) and underflows below.
+      const double big = s.n.cwiseAbs().maxCoeff();
+      if (!(big > 0)) return Status::invalid_argument;
+      const Vec3d u = s.n / big;
+      const double len = u.norm();
+      const Vec3d n = u / len;
+      const double lambda = s.lambda / big / len;
       // (7) as corrected in ERRATA.md: n + lambda n_inf - er is x . n = lambda.
       x << n[0], n[1], n[2], lambda, lambda, -1;
       break;
@@ -313,9 +318,11 @@ Status lie_vector(const LieSphere& s, Lie6d& out) {
 
 Status lie_sphere(const Lie6d& x, LieSphere& out) {
   if (!x.allFinite()) return Status::not_finite;
-  const double scale = x.norm();
-  if (!(scale > 0)) return Status::invalid_argument;
-  const Lie6d y = x / scale;
+  // x / max|x_i| first: x.norm() overflows for entries beyond ~1e154.
+  const double big = x.cwiseAbs().maxCoeff();
+  if (!(big > 0)) return Status::invalid_argument;
+  const Lie6d pre = x / big;
+  const Lie6d y = pre / pre.norm();
   if (!(std::abs(lie_dot(y, y)) <= kLieQuadricTol)) return Status::not_on_lie_quadric;
   const double t = dot_n_infinity(y);
   const double er = dot_e_r(y);

@@ -168,6 +168,7 @@ CYC_API int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, i
 #define CYC_SURFACE_PRCS 1 /* canal surface by PRCS (seed 000 eq. 8-13) */
 #define CYC_SURFACE_PRRS 2 /* ringed surface by PRRS (seed 000 eq. 24-27) */
 #define CYC_SURFACE_RINGED 3 /* ringed surface (d, n, rho) through a curve c (seed 001 eq. 3) */
+#define CYC_SURFACE_DUPIN 4 /* Dupin cyclide from Lie sphere geometry (seed 003, cyc_dupin_surface_create) */
 
 /** PRCS: the canal surface through p1 and p2 (either may be a line element;
  *  not a point), x(u,v) of eq. (11) with circle parameter f (NULL: f = v),
@@ -194,7 +195,8 @@ CYC_API int cyc_ringed_create(cyc_context* ctx, const cyc_curve* d, const cyc_cu
                               cyc_surface** out);
 /** Destroy a surface (NULL: no-op). ctx may be NULL. */
 CYC_API void cyc_surface_destroy(cyc_context* ctx, cyc_surface* surface);
-/** CYC_SURFACE_PRCS, CYC_SURFACE_PRRS or CYC_SURFACE_RINGED. */
+/** CYC_SURFACE_PRCS, CYC_SURFACE_PRRS, CYC_SURFACE_RINGED or
+ *  CYC_SURFACE_DUPIN. */
 CYC_API int cyc_surface_kind(cyc_context* ctx, const cyc_surface* surface, int* kind);
 /** The domain [u0, u1] the surface was checked on. */
 CYC_API int cyc_surface_domain(cyc_context* ctx, const cyc_surface* surface, double* u0,
@@ -1466,6 +1468,242 @@ CYC_API int cyc_optimize_skin_tangents(cyc_context* ctx, const cyc_skin_end* sta
                                        const cyc_skin_tangent_options* options,
                                        cyc_skin_end* start_out, cyc_skin_end* end_out,
                                        cyc_skin_tangent_summary* summary);
+
+/* ------------- Lie sphere geometry and Dupin cyclides (seed 003) */
+/* Lie sphere geometry in R^{4,2} (seed 003 sec. 2, with ERRATA.md; SPEC.md
+ * sec. 8h): coordinates in the orthogonal basis (e1, e2, e3, e+, e-, er)
+ * with x . y = x1 y1 + x2 y2 + x3 y3 + x+ y+ - x- y- - xr yr, n_inf = e+ +
+ * e-. A 6-vector is 6 doubles in that order. Oriented spheres, planes and
+ * points are neutral vectors (x . x = 0) up to scale; oriented contact is
+ * x . y = 0. 6x6 matrices (cyc_lie_transform, cyc_dupin, Witt extensions)
+ * are ROW-MAJOR: entry (i, j) is m[6*i + j], acting on column vectors
+ * (x' = M x), so column j (m[j], m[6 + j], ..., m[30 + j]) is the image of
+ * the j-th basis vector.
+ * Every function here is allocation-free except cyc_dupin_surface_create
+ * (creation tier: it allocates the handle from the context's allocator).
+ * Every function writes its outputs only on CYC_OK (the one exception,
+ * cyc_dupin_classify_spheres, is documented there). Inputs must be finite
+ * (CYC_E_NOT_FINITE); results that overflow are CYC_E_NUMERICAL_OVERFLOW. */
+
+/** Kinds of Lie spheres (frozen). */
+#define CYC_LIE_SPHERE 1            /* center m, oriented radius rho (> 0: normals outward) */
+#define CYC_LIE_POINT 2             /* the point m (rho = 0) */
+#define CYC_LIE_PLANE 3             /* the oriented plane x . n = lambda, normal n */
+#define CYC_LIE_POINT_AT_INFINITY 4 /* n_inf */
+
+/** A Lie sphere by its Euclidean data (frozen). Only the fields of its
+ *  kind are read; the others are written as 0. A plane's n need not be
+ *  unit on input (the plane is rescaled); outputs have |n| = 1. */
+typedef struct cyc_lie_sphere {
+  int kind; /* CYC_LIE_SPHERE .. CYC_LIE_POINT_AT_INFINITY */
+  double m[3];
+  double rho;
+  double n[3];
+  double lambda;
+} cyc_lie_sphere;
+
+/** The normalized representative: (4) 2m + (m^2 - rho^2) n_inf - n0 +
+ *  2 rho er for spheres and points (n0 = e+ - e-), (7) as corrected
+ *  n + lambda n_inf - er for planes, n_inf for the point at infinity.
+ *  CYC_E_INVALID_ARGUMENT (unknown kind, plane with n = 0),
+ *  CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_lie_vector(cyc_context* ctx, const cyc_lie_sphere* sphere, double x[6]);
+/** The Lie sphere of a representative x of any scale ((6), (9)).
+ *  CYC_E_NOT_ON_LIE_QUADRIC when |x . x| > 1e-9 |x|^2, CYC_E_INVALID_ARGUMENT
+ *  for x = 0, CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_lie_sphere_of(cyc_context* ctx, const double x[6], cyc_lie_sphere* out);
+/** The inner product x . y of R^{4,2}. CYC_E_NOT_FINITE,
+ *  CYC_E_NUMERICAL_OVERFLOW (the product overflows). */
+CYC_API int cyc_lie_dot(cyc_context* ctx, const double x[6], const double y[6], double* out);
+/** Oriented contact (Lemma 2.7): *contact = |x . y| <= tol |x| |y| (0 or 1).
+ *  tol >= 0 (e.g. 1e-9), else CYC_E_INVALID_ARGUMENT; CYC_E_NOT_FINITE. */
+CYC_API int cyc_lie_in_contact(cyc_context* ctx, const double x[6], const double y[6],
+                               double tol, int* contact);
+
+/** The span of k vectors (vectors: 6*k doubles, 0 <= k <= 6; NULL allowed
+ *  for k = 0): its dimension (rank-revealing SVD, relative threshold 1e-10)
+ *  and signature (p, r, q) = numbers of positive, zero and negative
+ *  eigenvalues of the form on it (zero: |eigenvalue| <= 1e-9 on a
+ *  Euclidean-orthonormal basis). signature may be NULL.
+ *  CYC_E_INVALID_ARGUMENT (k outside 0..6), CYC_E_NOT_FINITE. */
+CYC_API int cyc_lie_span(cyc_context* ctx, const double* vectors, int k, int* dim,
+                         int signature[3]);
+/** The orthogonal complement (for the form) of span(vectors): *dim = 6 -
+ *  dim span, its signature, and a Euclidean-orthonormal basis in basis
+ *  (36 doubles, may be NULL): basis vector j (j < *dim) is basis[6*j ..
+ *  6*j + 5]; the remaining entries are set to 0. Statuses of cyc_lie_span. */
+CYC_API int cyc_lie_complement(cyc_context* ctx, const double* vectors, int k, double basis[36],
+                               int* dim, int signature[3]);
+/** The signature of the complement of any subspace with signature
+ *  (p, r, q): (4 - p - r, r, 2 - q - r) (Table 1 as corrected in
+ *  ERRATA.md). CYC_E_INVALID_ARGUMENT when no subspace of R^{4,2} has that
+ *  signature (a negative entry, p + r > 4 or q + r > 2). */
+CYC_API int cyc_lie_complement_signature(cyc_context* ctx, const int signature[3], int out[3]);
+/** Witt's extension theorem (Thm. 2.3), constructive: for linearly
+ *  independent u_0..u_{k-1} and w_0..w_{k-1} (6*k doubles each, 1 <= k <=
+ *  6) with u_i . u_j = w_i . w_j (to 1e-9 relative), a matrix T in O(4,2)
+ *  (T^T J T = J) with T u_i = w_i, ROW-MAJOR in T (36 doubles). residual
+ *  (may be NULL): max(|T^T J T - J|, |T u_i - w_i| / |w_i|).
+ *  CYC_E_INVALID_ARGUMENT (k), CYC_E_NOT_FINITE, CYC_E_RANK_DEFICIENT (u or w
+ *  dependent), CYC_E_NOT_ISOMETRIC (Gram matrices or complements'
+ *  signatures differ), CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_lie_witt_extension(cyc_context* ctx, const double* u, const double* w, int k,
+                                   double T[36], double* residual);
+
+/** A Lie transformation: an element of O(4,2), ROW-MAJOR (frozen). Lie
+ *  spheres map by their representatives, x -> M x. */
+typedef struct cyc_lie_transform {
+  double m[36];
+} cyc_lie_transform;
+
+/** x -> x + t. CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_lie_transform_translation(cyc_context* ctx, const double t[3],
+                                          cyc_lie_transform* out);
+/** x -> R x, R a 3x3 ROW-MAJOR orthogonal matrix (rotations and
+ *  reflections): CYC_E_INVALID_ARGUMENT when max |R^T R - I| > 1e-9. */
+CYC_API int cyc_lie_transform_rotation(cyc_context* ctx, const double R[9],
+                                       cyc_lie_transform* out);
+/** x -> s x, s > 0 (CYC_E_INVALID_ARGUMENT otherwise). */
+CYC_API int cyc_lie_transform_scaling(cyc_context* ctx, double s, cyc_lie_transform* out);
+/** The Laguerre dilatation by d: rho -> rho + d, planes moved by d along
+ *  their normals (offsets). */
+CYC_API int cyc_lie_transform_dilatation(cyc_context* ctx, double d, cyc_lie_transform* out);
+/** The inversion at the sphere (center, radius), radius > 0
+ *  (CYC_E_INVALID_ARGUMENT otherwise). A Mobius transformation. */
+CYC_API int cyc_lie_transform_inversion(cyc_context* ctx, const double center[3], double radius,
+                                        cyc_lie_transform* out);
+/** rho -> -rho, n -> -n (er -> -er). */
+CYC_API int cyc_lie_transform_orientation_reversal(cyc_context* ctx, cyc_lie_transform* out);
+/** first, then then: out = then * first (out may alias either input).
+ *  CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_lie_transform_compose(cyc_context* ctx, const cyc_lie_transform* first,
+                                      const cyc_lie_transform* then, cyc_lie_transform* out);
+/** The image of a Lie sphere (it may change kind: an inversion maps spheres
+ *  through its center to planes). Statuses of cyc_lie_vector and
+ *  cyc_lie_sphere_of; CYC_E_NOT_FINITE for a non-finite matrix. */
+CYC_API int cyc_lie_transform_apply(cyc_context* ctx, const cyc_lie_transform* T,
+                                    const cyc_lie_sphere* in, cyc_lie_sphere* out);
+/** *is_lie = 1 when M is in O(4,2): max |M^T J M - J| <= 1e-9 max(1,
+ *  max|M|^2); *is_laguerre = 1 when also M fixes the line of n_inf (to
+ *  1e-9 relative), *is_mobius = 1 when also M fixes the line of er. Any of
+ *  the three outputs may be NULL. CYC_E_NOT_FINITE. */
+CYC_API int cyc_lie_transform_classify(cyc_context* ctx, const cyc_lie_transform* T,
+                                       int* is_lie, int* is_laguerre, int* is_mobius);
+
+/* Dupin cyclides (seed 003 sec. 3): the envelope of the oriented spheres
+ * touching three given ones, stored as theta in O(4,2) with theta(A0) = A
+ * (Remark 3.12), A0 = span(e1, e2, e-). The two sphere families are
+ *   a(xi)        = theta(2 xi0 xi1 e1 + (xi1^2 - xi0^2) e2 + (xi1^2 + xi0^2) e-)
+ *   a_perp(zeta) = theta(2 z0 z1 e3 + (z1^2 - z0^2) e+ + (z1^2 + z0^2) er)
+ * for homogeneous parameters xi0 : xi1 and z0 : z1 (affine xi = xi0 / xi1),
+ * and c(xi, zeta) is the point where a(xi) touches a_perp(zeta). */
+
+/** Laguerre classes (Lemma 3.10 / Thm. 3.11; names by the sphere centers,
+ *  see SPEC.md sec. 8h) (frozen). */
+#define CYC_DUPIN_DEGENERATE 1 /* I: a cone or cylinder of revolution */
+#define CYC_DUPIN_PARABOLIC 2  /* II: one plane per family (cubic) */
+#define CYC_DUPIN_QUARTIC 3    /* III: quartic (e.g. a torus) */
+
+/** A Dupin cyclide (frozen): theta ROW-MAJOR (column j is theta(e_j)) and
+ *  its Laguerre class. A value, validated by every function taking it:
+ *  finite, theta in O(4,2) (max |theta^T J theta - J| <= 1e-8 max(1,
+ *  max|theta|^2)) and type the class of theta; else CYC_E_INVALID_ARGUMENT
+ *  (CYC_E_NOT_FINITE for NaN/Inf). Every cyc_dupin this API returns
+ *  passes that check. */
+typedef struct cyc_dupin {
+  double theta[36];
+  int type; /* CYC_DUPIN_DEGENERATE .. CYC_DUPIN_QUARTIC */
+} cyc_dupin;
+
+/** A point of a Dupin cyclide or of its offset (frozen): point = c + d n,
+ *  the unit normal n, the tangent plane x . n = lambda of c, and the
+ *  partials of point with respect to the affine xi and zeta (zero from
+ *  cyc_dupin_eval_homogeneous). */
+typedef struct cyc_dupin_point {
+  double point[3];
+  double normal[3];
+  double lambda;
+  double d_xi[3];
+  double d_zeta[3];
+} cyc_dupin_point;
+
+/** Case analysis of sec. 3.1 for three Lie spheres. Its statuses are the
+ *  answer: CYC_OK (a cyclide: span A = R^{2,1}), CYC_E_SPHERE_PENCIL (dim A
+ *  = 2, Case I), CYC_E_NO_TOUCHING_SPHERE (A = R^{1,2}),
+ *  CYC_E_SINGLE_TOUCHING_SPHERE (A = R^{1,1,1}); for these four, and only
+ *  these, signature (may be NULL) receives A's signature (a pencil:
+ *  (0, 2, 0)). Errors that leave signature untouched: CYC_E_INVALID_ARGUMENT
+ *  (an unknown kind, a plane with n = 0, two equal Lie spheres),
+ *  CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_dupin_classify_spheres(cyc_context* ctx, const cyc_lie_sphere spheres[3],
+                                       int signature[3]);
+/** Algorithm 1 (corrected): the cyclide whose first family has a(0),
+ *  a(infinity), a(1) = the three spheres. Statuses of
+ *  cyc_dupin_classify_spheres (except CYC_OK's meaning), CYC_E_DEGENERATE_CYCLIDE
+ *  (every sphere of a family is a point: a curve), CYC_E_NOT_ISOMETRIC,
+ *  CYC_E_NUMERICAL_OVERFLOW (also: theta not orthogonal to the tolerance
+ *  above, an ill-conditioned triple). */
+CYC_API int cyc_dupin_from_spheres(cyc_context* ctx, const cyc_lie_sphere spheres[3],
+                                   cyc_dupin* out);
+/** The same from three representatives a = (a1, a2, a3), 18 doubles, any
+ *  scale; adds CYC_E_NOT_ON_LIE_QUADRIC (a vector is not neutral to 1e-9
+ *  relative) and CYC_E_INVALID_ARGUMENT (a zero vector). */
+CYC_API int cyc_dupin_from_vectors(cyc_context* ctx, const double a[18], cyc_dupin* out);
+/** The cyclide of a PE-subspace A = span(span[0..k-1]) (6*k doubles, 3 <=
+ *  k <= 6, rank 3, signature (2, 0, 1)); signature (may be NULL) receives
+ *  the span's signature on success. CYC_E_INVALID_ARGUMENT (k),
+ *  CYC_E_NOT_FINITE, CYC_E_NOT_ISOMETRIC (not a PE-subspace; the message
+ *  names its dimension and signature), CYC_E_DEGENERATE_CYCLIDE,
+ *  CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_dupin_from_subspace(cyc_context* ctx, const double* span, int k, cyc_dupin* out,
+                                    int signature[3]);
+/** The same surface with the two families exchanged (Cor. 3.6). out may
+ *  alias in. */
+CYC_API int cyc_dupin_swap_families(cyc_context* ctx, const cyc_dupin* in, cyc_dupin* out);
+/** The offset cyclide at distance d (points c + d n): theta composed with
+ *  the dilatation by d. CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW (theta
+ *  overflows or leaves O(4,2) to the tolerance above). out may alias in. */
+CYC_API int cyc_dupin_offset(cyc_context* ctx, const cyc_dupin* in, double d, cyc_dupin* out);
+/** The point c(xi, zeta) + offset n with normal, tangent plane and
+ *  partials, affine (finite) parameters. CYC_E_NOT_FINITE,
+ *  CYC_E_POINT_AT_INFINITY (c . n_inf = 0 relative to 1e-13),
+ *  CYC_E_SINGULAR_POINT (the normal is undefined), CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_dupin_eval(cyc_context* ctx, const cyc_dupin* cyclide, double xi, double zeta,
+                           double offset, cyc_dupin_point* out);
+/** The same at homogeneous parameters xi[0] : xi[1], zeta[0] : zeta[1]
+ *  (either may be infinity, x : 0); the partials are 0.
+ *  CYC_E_INVALID_ARGUMENT for 0 : 0. */
+CYC_API int cyc_dupin_eval_homogeneous(cyc_context* ctx, const cyc_dupin* cyclide,
+                                       const double xi[2], const double zeta[2], double offset,
+                                       cyc_dupin_point* out);
+/** The sphere a(t) (family 0) or a_perp(t) (family 1) at the homogeneous
+ *  parameter t[0] : t[1], as a Lie sphere (it may be a plane or a point).
+ *  CYC_E_INVALID_ARGUMENT (family not 0 or 1, t = 0 : 0),
+ *  CYC_E_NOT_FINITE, CYC_E_NUMERICAL_OVERFLOW. */
+CYC_API int cyc_dupin_sphere(cyc_context* ctx, const cyc_dupin* cyclide, int family,
+                             const double t[2], cyc_lie_sphere* out);
+/** All or nothing: the points (and unit normals) of cyc_dupin_eval at
+ *  every (xis[i], zetas[j]), row-major: vector i*nzeta + j at 3*(i*nzeta +
+ *  j) of points / normals (either may be NULL). Every point is computed
+ *  and checked before anything is written; any failure (e.g. one point at
+ *  infinity) fails the whole grid with that point's status and writes
+ *  nothing. nxi or nzeta = 0 is CYC_OK with nothing written;
+ *  CYC_E_INVALID_ARGUMENT when nxi * nzeta * 3 overflows size_t. */
+CYC_API int cyc_dupin_eval_grid(cyc_context* ctx, const cyc_dupin* cyclide, const double* xis,
+                                size_t nxi, const double* zetas, size_t nzeta, double offset,
+                                double* points, double* normals);
+/** The cyclide as a circle-family surface (kind CYC_SURFACE_DUPIN) over u
+ *  in [u0, u1]: xi = (xi_map[0] u + xi_map[1]) / (xi_map[2] u + xi_map[3])
+ *  and zeta likewise in v (NULL: the identity; each map needs a d - b c !=
+ *  0 to 1e-12 relative, else CYC_E_INVALID_ARGUMENT), so cyc_surface_eval(u,
+ *  v) = c(xi(u), zeta(v)) and the circle at u is the characteristic circle
+ *  of a(xi(u)). The domain is scanned like the other creators:
+ *  CYC_E_POINT_AT_INFINITY or CYC_E_SINGULAR_POINT at a sample (the message
+ *  names u), CYC_E_BAD_DOMAIN, CYC_E_NOT_FINITE, CYC_E_OUT_OF_MEMORY.
+ *  Creation tier: allocates the handle. */
+CYC_API int cyc_dupin_surface_create(cyc_context* ctx, const cyc_dupin* cyclide,
+                                     const double xi_map[4], const double zeta_map[4], double u0,
+                                     double u1, cyc_surface** out);
 
 #ifdef __cplusplus
 }
