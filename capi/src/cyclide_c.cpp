@@ -113,6 +113,7 @@ const char* cyc_status_name(int status) {
     case CYC_E_NO_TOUCHING_SPHERE: case CYC_E_SINGLE_TOUCHING_SPHERE:
     case CYC_E_DEGENERATE_CYCLIDE: case CYC_E_NOT_ISOMETRIC: case CYC_E_NOT_ON_LIE_QUADRIC:
     case CYC_E_POINT_AT_INFINITY: case CYC_E_TANGENT_GENERATING_SPHERES:
+    case CYC_E_BLEND_FOLDS:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));

@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "capi_internal.hpp"
+#include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/lie.hpp"
 
@@ -760,6 +761,301 @@ int cyc_dupin_surface_create(cyc_context* ctx, const cyc_dupin* cyclide, const d
     if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
     if (s != Status::ok) return from_core_at(fn, s, bad_u);
     return emit(fn, ctx, out, S);
+  });
+}
+
+}  // extern "C"
+
+// ------------------------------------------- cyclide blends (Algorithm 2)
+
+namespace {
+
+LieCone cone_in(const cyc_lie_cone* c) { return {lie6(c->r0), lie6(c->r_plus)}; }
+
+void cone_out(const LieCone& K, cyc_lie_cone* out) {
+  cyc_lie_cone c;
+  put6(c.r0, K.r0);
+  put6(c.r_plus, K.r_plus);
+  *out = c;
+}
+
+Outcome cone_status(const char* fn, Status s) {
+  switch (s) {
+    case Status::unsupported:
+      return fail(int(s), "%s: the generating sphere r0 is a plane (a planar tangent cone, "
+                          "Remark 4.2): not supported yet", fn);
+    case Status::invalid_argument:
+      return fail(int(s), "%s: not a cone: r_plus must be positive and orthogonal to r0, r0 "
+                          "no point sphere, the two cones' generating spheres distinct (or an "
+                          "argument is out of range: orientation/direction/branch +-1, radius "
+                          "> 0, |dm| > |drho|, apex on the axis)", fn);
+    default: return from_core(fn, s);
+  }
+}
+
+// A caller's blend: 1 or 2 pieces, each a valid cyc_dupin.
+Outcome blend_in(const char* fn, const cyc_cyclide_blend* b, CyclideBlend& B) {
+  if (b->pieces != 1 && b->pieces != 2)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: blend->pieces = %d is not 1 or 2", fn, b->pieces);
+  CyclideBlend C;
+  C.pieces = b->pieces;
+  C.branch = b->branch;
+  C.alpha = b->alpha;
+  C.beta = b->beta;
+  C.joint = lie6(b->joint);
+  for (int i = 0; i < C.pieces; ++i)
+    if (Outcome r = dupin_in(fn, &b->piece[i], C.piece[i].cyclide); r.status) return r;
+  B = C;
+  return ok();
+}
+
+Outcome blend_out(const char* fn, const CyclideBlend& B, cyc_cyclide_blend* out) {
+  cyc_cyclide_blend c;
+  std::memset(&c, 0, sizeof c);
+  c.pieces = B.pieces;
+  c.branch = B.branch;
+  c.alpha = B.alpha;
+  c.beta = B.beta;
+  put6(c.joint, B.joint);
+  for (int i = 0; i < B.pieces; ++i)
+    if (Outcome r = dupin_out(fn, B.piece[i].cyclide, &c.piece[i]); r.status) return r;
+  *out = c;
+  return ok();
+}
+
+}  // namespace
+
+extern "C" {
+
+int cyc_cone_from_spheres(cyc_context* ctx, const double m[3], double rho, const double dm[3],
+                          double drho, cyc_lie_cone* out) {
+  const char* fn = "cyc_cone_from_spheres";
+  return run(ctx, fn, [&] {
+    REQUIRE(m);
+    REQUIRE(dm);
+    REQUIRE(out);
+    LieCone K;
+    const Status s = cone_from_spheres(Vec3d(m[0], m[1], m[2]), rho, Vec3d(dm[0], dm[1], dm[2]),
+                                       drho, K);
+    if (s != Status::ok) return cone_status(fn, s);
+    cone_out(K, out);
+    return ok();
+  });
+}
+
+int cyc_cone_from_circle(cyc_context* ctx, const double center[3], const double normal[3],
+                         double radius, double slope, int orientation, cyc_lie_cone* out) {
+  const char* fn = "cyc_cone_from_circle";
+  return run(ctx, fn, [&] {
+    REQUIRE(center);
+    REQUIRE(normal);
+    REQUIRE(out);
+    LieCone K;
+    const Status s = cone_from_circle(Vec3d(center[0], center[1], center[2]),
+                                      Vec3d(normal[0], normal[1], normal[2]), radius, slope,
+                                      orientation, K);
+    if (s != Status::ok) return cone_status(fn, s);
+    cone_out(K, out);
+    return ok();
+  });
+}
+
+int cyc_cone_from_circle_apex(cyc_context* ctx, const double center[3], const double normal[3],
+                              double radius, const double apex[3], int orientation,
+                              cyc_lie_cone* out) {
+  const char* fn = "cyc_cone_from_circle_apex";
+  return run(ctx, fn, [&] {
+    REQUIRE(center);
+    REQUIRE(normal);
+    REQUIRE(apex);
+    REQUIRE(out);
+    LieCone K;
+    const Status s = cone_from_circle_apex(Vec3d(center[0], center[1], center[2]),
+                                           Vec3d(normal[0], normal[1], normal[2]), radius,
+                                           Vec3d(apex[0], apex[1], apex[2]), orientation, K);
+    if (s != Status::ok) return cone_status(fn, s);
+    cone_out(K, out);
+    return ok();
+  });
+}
+
+int cyc_cone_from_surface(cyc_context* ctx, const cyc_surface* surface, double u, int direction,
+                          int orientation, cyc_lie_cone* out) {
+  const char* fn = "cyc_cone_from_surface";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    LieCone K;
+    const Status s = cone_from_surface(surface->surface, u, direction, orientation, K);
+    if (s == Status::not_canal)
+      return fail(int(s), "%s: the surface is not canal by construction (kinds PRCS and "
+                          "DUPIN have tangent cones)", fn);
+    if (s != Status::ok) return cone_status(fn, s);
+    cone_out(K, out);
+    return ok();
+  });
+}
+
+int cyc_cone_circle(cyc_context* ctx, const cyc_lie_cone* cone, double center[3],
+                    double normal[3], double* radius) {
+  const char* fn = "cyc_cone_circle";
+  return run(ctx, fn, [&] {
+    REQUIRE(cone);
+    REQUIRE(center);
+    REQUIRE(normal);
+    REQUIRE(radius);
+    Vec3d c, n;
+    double r;
+    const Status s = cone_circle(cone_in(cone), c, n, r);
+    if (s != Status::ok) return cone_status(fn, s);
+    if (!c.allFinite() || !n.allFinite() || !std::isfinite(r))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the circle overflows", fn);
+    put3(center, c);
+    put3(normal, n);
+    *radius = r;
+    return ok();
+  });
+}
+
+int cyc_cone_surface_create(cyc_context* ctx, const cyc_lie_cone* cone, double h0, double h1,
+                            cyc_surface** out) {
+  const char* fn = "cyc_cone_surface_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(cone);
+    REQUIRE(out);
+    Surface S;
+    const Status s = cone_surface(cone_in(cone), h0, h1, S);
+    if (s != Status::ok) return cone_status(fn, s);
+    return emit(fn, ctx, out, S);
+  });
+}
+
+int cyc_cyclide_blend_dimension(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                                int* dim) {
+  const char* fn = "cyc_cyclide_blend_dimension";
+  return run(ctx, fn, [&] {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(dim);
+    int d = 0;
+    const Status st = cyclide_blend_dimension(cone_in(r), cone_in(s), d);
+    if (st != Status::ok) return cone_status(fn, st);
+    *dim = d;
+    return ok();
+  });
+}
+
+int cyc_cyclide_blend_beta(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                           int branch, double alpha, double* beta) {
+  const char* fn = "cyc_cyclide_blend_beta";
+  return run(ctx, fn, [&] {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(beta);
+    if (branch != 1 && branch != -1)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: branch = %d is not +1 or -1", fn, branch);
+    double b = 0;
+    const Status st = cyclide_blend_beta(cone_in(r), cone_in(s), branch, alpha, b);
+    if (st == Status::invalid_argument)
+      return fail(int(st), "%s: alpha = %.17g is the asymptote (45) of (43) (or a cone is "
+                           "invalid)", fn, alpha);
+    if (st != Status::ok) return cone_status(fn, st);
+    *beta = b;
+    return ok();
+  });
+}
+
+int cyc_cyclide_blend_build(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s, int branch,
+                      double alpha, cyc_cyclide_blend* out) {
+  const char* fn = "cyc_cyclide_blend_build";
+  return run(ctx, fn, [&] {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(out);
+    CyclideBlend B;
+    const Status st = cyclide_blend(cone_in(r), cone_in(s), branch, alpha, B);
+    if (st != Status::ok) return cone_status(fn, st);
+    return blend_out(fn, B, out);
+  });
+}
+
+int cyc_cyclide_blend_auto(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                           int samples, cyc_cyclide_blend* out, double* quality) {
+  const char* fn = "cyc_cyclide_blend_auto";
+  return run(ctx, fn, [&] {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(out);
+    if (samples < 8 || samples > 4096)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: samples = %d is not in 8..4096", fn, samples);
+    CyclideBlend B;
+    double q = 0;
+    const Status st = cyclide_blend_auto(cone_in(r), cone_in(s), B, samples, &q);
+    if (st != Status::ok) return cone_status(fn, st);
+    cyc_cyclide_blend c;
+    if (Outcome o = blend_out(fn, B, &c); o.status) return o;
+    *out = c;
+    if (quality) *quality = q;
+    return ok();
+  });
+}
+
+int cyc_cyclide_blend_quality(cyc_context* ctx, const cyc_cyclide_blend* blend, double* quality) {
+  const char* fn = "cyc_cyclide_blend_quality";
+  return run(ctx, fn, [&] {
+    REQUIRE(blend);
+    REQUIRE(quality);
+    CyclideBlend B;
+    if (Outcome o = blend_in(fn, blend, B); o.status) return o;
+    double q = 0;
+    if (Status st = cyclide_blend_quality(B, q); st != Status::ok) return from_core(fn, st);
+    *quality = q;
+    return ok();
+  });
+}
+
+int cyc_cyclide_blend_surface_create(cyc_context* ctx, const cyc_cyclide_blend* blend, int piece,
+                                     cyc_surface** out) {
+  const char* fn = "cyc_cyclide_blend_surface_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(blend);
+    REQUIRE(out);
+    CyclideBlend B;
+    if (Outcome o = blend_in(fn, blend, B); o.status) return o;
+    if (piece < 0 || piece >= B.pieces)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: piece = %d, the blend has %d", fn, piece,
+                  B.pieces);
+    Surface S;
+    if (Status st = cyclide_blend_surface(B, piece, S); st != Status::ok)
+      return from_core(fn, st);
+    return emit(fn, ctx, out, S);
+  });
+}
+
+int cyc_cyclide_blend_continuity(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                                 const cyc_cyclide_blend* blend, int n,
+                                 cyc_cyclide_blend_report* out) {
+  const char* fn = "cyc_cyclide_blend_continuity";
+  return run(ctx, fn, [&] {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(blend);
+    REQUIRE(out);
+    if (n < 1 || n > 4096)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is not in 1..4096", fn, n);
+    CyclideBlend B;
+    if (Outcome o = blend_in(fn, blend, B); o.status) return o;
+    CyclideBlendContinuity C;
+    const Status st = cyclide_blend_continuity(cone_in(r), cone_in(s), B, n, C);
+    if (st != Status::ok) return cone_status(fn, st);
+    cyc_cyclide_blend_report c;
+    for (int j = 0; j < 3; ++j) {
+      c.gap[j] = C.gap[j];
+      c.angle[j] = C.angle[j];
+    }
+    c.scale = C.scale;
+    *out = c;
+    return ok();
   });
 }
 

@@ -1705,6 +1705,118 @@ CYC_API int cyc_dupin_surface_create(cyc_context* ctx, const cyc_dupin* cyclide,
                                      const double xi_map[4], const double zeta_map[4], double u0,
                                      double u1, cyc_surface** out);
 
+/* -------------- cyclide blends of two cones (seed 003 sec. 4, Algorithm 2) */
+
+/** A cone (the tangent cone of a canal surface along a circle) in Lie form
+ *  (frozen): R = span(r0, r_plus) = R^{1,1,0}, r0 the sphere touching along
+ *  the circle and r_plus the derivative of the normalized sphere family,
+ *  pointing INTO the blend (SPEC.md sec. 8h.6). Functions accept any
+ *  representative scale and normalize (r0 . n_inf = -2, r_plus . n_inf =
+ *  0). They return CYC_E_NOT_ON_LIE_QUADRIC (r0 not neutral),
+ *  CYC_E_INVALID_ARGUMENT (r_plus not positive or not orthogonal to r0, a
+ *  point sphere), CYC_E_UNSUPPORTED (r0 is a plane: planar tangent cones
+ *  are not supported yet), CYC_E_NOT_FINITE. */
+typedef struct cyc_lie_cone {
+  double r0[6];
+  double r_plus[6];
+} cyc_lie_cone;
+
+/** The cone of the spheres (m + h dm, rho + h drho), h > 0 into the blend;
+ *  needs rho != 0 and |dm| > |drho| (CYC_E_INVALID_ARGUMENT). */
+CYC_API int cyc_cone_from_spheres(cyc_context* ctx, const double m[3], double rho,
+                                  const double dm[3], double drho, cyc_lie_cone* out);
+/** The cone (slope != 0) or cylinder (slope = 0) through the circle
+ *  (center, normal, radius > 0) whose radius changes by slope per unit
+ *  length along +normal; the blend leaves the circle along +normal.
+ *  orientation +1: normals away from the axis, -1: towards it. */
+CYC_API int cyc_cone_from_circle(cyc_context* ctx, const double center[3],
+                                 const double normal[3], double radius, double slope,
+                                 int orientation, cyc_lie_cone* out);
+/** The same from the apex, which must lie on the axis and off the circle's
+ *  plane (CYC_E_INVALID_ARGUMENT). */
+CYC_API int cyc_cone_from_circle_apex(cyc_context* ctx, const double center[3],
+                                      const double normal[3], double radius,
+                                      const double apex[3], int orientation, cyc_lie_cone* out);
+/** The tangent cone of a canal surface (CYC_SURFACE_PRCS or
+ *  CYC_SURFACE_DUPIN; else CYC_E_NOT_CANAL) along its circle at u;
+ *  direction +1 if the blend continues in +u, -1 in -u; orientation +1
+ *  keeps the surface's sphere radii, -1 reverses them. */
+CYC_API int cyc_cone_from_surface(cyc_context* ctx, const cyc_surface* surface, double u,
+                                  int direction, int orientation, cyc_lie_cone* out);
+/** The cone's circle: center, unit normal (into the blend), radius. */
+CYC_API int cyc_cone_circle(cyc_context* ctx, const cyc_lie_cone* cone, double center[3],
+                            double normal[3], double* radius);
+/** The cone as a ringed surface over h in [h0, h1] (h = 0: the circle;
+ *  h > 0: the blend's side). Creation tier. */
+CYC_API int cyc_cone_surface_create(cyc_context* ctx, const cyc_lie_cone* cone, double h0,
+                                    double h1, cyc_surface** out);
+
+/** A single or double cyclide blend (frozen). Each piece is a Dupin
+ *  cyclide with xi = 0 at its first glued sphere and xi = infinity at its
+ *  second; the blend patch is xi in [0, infinity] (as a surface: u in
+ *  [0, 1], xi = u / (1 - u), see cyc_cyclide_blend_surface_create).
+ *  pieces = 1: piece[0] runs from R's circle to S's. pieces = 2: piece[0]
+ *  runs from R's circle and piece[1] from S's circle, both to the joint
+ *  circle of the sphere joint (t0 of (44)), with T = span(alpha r0 +
+ *  r_plus, beta s0 + s_plus) on the hyperbola branch (43). */
+typedef struct cyc_cyclide_blend {
+  int pieces;
+  int branch;
+  double alpha, beta;
+  double joint[6];
+  cyc_dupin piece[2];
+} cyc_cyclide_blend;
+
+/** dim(R + S): 3 (a single cyclide) or 4 (double blends).
+ *  CYC_E_TANGENT_GENERATING_SPHERES (r0 . s0 = 0, Lemma 4.6 (i)),
+ *  CYC_E_INVALID_ARGUMENT (one generating sphere for both), and the cone
+ *  statuses above. */
+CYC_API int cyc_cyclide_blend_dimension(cyc_context* ctx, const cyc_lie_cone* r,
+                                        const cyc_lie_cone* s, int* dim);
+/** beta(alpha) on branch +1 or -1 of (43); CYC_E_INVALID_ARGUMENT at the
+ *  asymptote (45) or for another branch. */
+CYC_API int cyc_cyclide_blend_beta(cyc_context* ctx, const cyc_lie_cone* r,
+                                   const cyc_lie_cone* s, int branch, double alpha,
+                                   double* beta);
+/** Algorithm 2 at (branch, alpha) (ignored when dim(R + S) = 3).
+ *  CYC_E_BLEND_FOLDS (a piece reaches a circle from the wrong side),
+ *  CYC_E_SINGULAR_POINT (a piece pinches: a point sphere in its patch or on
+ *  its circles), and the statuses of cyc_cyclide_blend_dimension and
+ *  cyc_cyclide_blend_beta. Allocation-free. */
+CYC_API int cyc_cyclide_blend_build(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                              int branch, double alpha, cyc_cyclide_blend* out);
+/** Algorithm 2 with the free parameter chosen: samples (8..4096) values
+ *  alpha = tan(phi) on both branches, the best by quality, refined by
+ *  golden section. quality (may be NULL) = min / max circle radius over
+ *  both circle families of the patches. CYC_E_BLEND_FOLDS or
+ *  CYC_E_SINGULAR_POINT when no sample is valid. Allocation-free. */
+CYC_API int cyc_cyclide_blend_auto(cyc_context* ctx, const cyc_lie_cone* r,
+                                   const cyc_lie_cone* s, int samples, cyc_cyclide_blend* out,
+                                   double* quality);
+/** The quality measure of a blend (validated like a cyc_dupin). */
+CYC_API int cyc_cyclide_blend_quality(cyc_context* ctx, const cyc_cyclide_blend* blend,
+                                      double* quality);
+/** Piece i's patch as a circle-family surface (CYC_SURFACE_DUPIN), u in
+ *  [0, 1]. Creation tier. */
+CYC_API int cyc_cyclide_blend_surface_create(cyc_context* ctx, const cyc_cyclide_blend* blend,
+                                             int piece, cyc_surface** out);
+
+/** G1 at the glued circles (frozen): gap[j] the largest distance between
+ *  corresponding points, angle[j] the largest angle between tangent planes
+ *  (radians), j = 0: cone R / piece 0, 1: the joint (0 for single
+ *  blends), 2: cone S / the last piece; scale = the largest |point| +
+ *  circle radius seen (for relative gaps). */
+typedef struct cyc_cyclide_blend_report {
+  double gap[3];
+  double angle[3];
+  double scale;
+} cyc_cyclide_blend_report;
+/** The continuity report of a blend of the cones r and s at n >= 1
+ *  samples per circle. */
+CYC_API int cyc_cyclide_blend_continuity(cyc_context* ctx, const cyc_lie_cone* r,
+                                         const cyc_lie_cone* s, const cyc_cyclide_blend* blend,
+                                         int n, cyc_cyclide_blend_report* out);
+
 #ifdef __cplusplus
 }
 #endif
