@@ -411,7 +411,7 @@ Status cyclide_blend_surface(const CyclideBlend& B, int i, Surface& out) {
 
 namespace {
 // The cone's side of its circle for the reports: h in [h0, 0] with h0 = -1,
-// or half way to the apex when that is closer (h = -rho / drho): a fixed
+// or half way to the apex when that is closer than h = -2 (h = -rho / drho): a fixed
 // h0 = -1 reached through the apex of steep cones, and the surface builder's
 // scan reported singular_point for an OK blend (found by
 // tests/lie_properties_test.cpp: R = cone_from_circle((0.3125, -2, -2),
@@ -423,7 +423,7 @@ double cone_start(const LieCone& C0) {
   const double rho = 0.5 * C.r0[kER], drho = 0.5 * C.r_plus[kER];
   if (drho == 0) return -1.0;
   const double apex = -rho / drho;
-  return (apex < 0 && apex > -1.0) ? 0.5 * apex : -1.0;
+  return (apex < 0 && apex > -2.0) ? 0.5 * apex : -1.0;  // stay at most half way
 }
 
 Status join_report(const Surface& A, double uA, const Surface& B, double uB, int n,
