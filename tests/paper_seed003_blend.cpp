@@ -187,16 +187,31 @@ TEST(Seed003Algorithm2, DoubleBlendOnBothBranches) {
       }
     }
   EXPECT_GT(valid[0], 0);  // this configuration's blends live on branch -1
-  // The other branch is valid once S's orientation is reversed.
-  const LieCone S2 = cone({3, 0, 3}, {-1, 0, 0}, 1, 0, -1);
+  EXPECT_EQ(valid[1], 0);
+  // The two hyperbolas are the two sides of S: reversing S's direction
+  // (r+ -> -r+, the blend leaving S's circle over S itself) maps branch
+  // sigma, beta to branch -sigma, -beta with the same T, so the valid
+  // blends of one branch are folded blends of the other.
+  const LieCone Srev = cone({2, 0, 3}, {0, 0, 1}, 1, 0, 1);
+  EXPECT_NEAR((Srev.r0 - S.r0).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((Srev.r_plus + S.r_plus).norm(), 0.0, 1e-14);
   CyclideBlend B;
+  int checked = 0;
+  for (double alpha : {-5.0, -1.0, -0.6, 0.2, 3.0}) {
+    double b1 = 0, b2 = 0;
+    ASSERT_EQ(cyclide_blend_beta(R, S, -1, alpha, b1), Status::ok);
+    ASSERT_EQ(cyclide_blend_beta(R, Srev, 1, alpha, b2), Status::ok);
+    EXPECT_NEAR(b2, -b1, 1e-12 * (1 + std::abs(b1)));
+    if (cyclide_blend(R, S, -1, alpha, B) == Status::ok) {
+      EXPECT_EQ(cyclide_blend(R, Srev, 1, alpha, B), Status::blend_folds);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
   double q = 0;
-  ASSERT_EQ(cyclide_blend_auto(R, S2, B, 64, &q), Status::ok);
-  EXPECT_EQ(B.pieces, 2);
-  EXPECT_EQ(B.branch, 1);
-  expect_g1(R, S2, B, 1e-9);
   ASSERT_EQ(cyclide_blend_auto(R, S, B, 64, &q), Status::ok);
   EXPECT_EQ(B.pieces, 2);
+  EXPECT_EQ(B.branch, -1);
   EXPECT_GT(q, 0.1);
   expect_g1(R, S, B, 1e-9);
 }
