@@ -906,6 +906,163 @@ static void skin_demos(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_sphere_skin_destroy(ctx, skin);
 }
 
+/* Seed 003: Dupin cyclides from three spheres (Algorithm 1, PN, offsets,
+ * Laguerre classes) and single/double cyclide blends of two cones
+ * (Algorithm 2), each certified by its residuals. */
+static double now_seconds(void) { return (double)clock() / CLOCKS_PER_SEC; }
+
+static double g_tube = 1.0;
+static double torus_eq(const double p[3]) {
+  const double rho = sqrt(p[0] * p[0] + p[1] * p[1]) - 3;
+  return rho * rho + p[2] * p[2] - g_tube * g_tube;
+}
+
+static const char* dupin_class(int type) {
+  switch (type) {
+    case CYC_DUPIN_DEGENERATE: return "I (degenerate: cone or cylinder)";
+    case CYC_DUPIN_PARABOLIC: return "II (parabolic, cubic)";
+    case CYC_DUPIN_QUARTIC: return "III (quartic)";
+  }
+  return "?";
+}
+
+/* The whole cyclide as two patches: xi in [-1, 1] and xi = 1/u, u in [-1, 1]. */
+static void write_dupin(cyc_context* ctx, const cyc_dupin* d, const char* dir, const char* name,
+                        implicit_fn implicit, FILE* report) {
+  const double inner[4] = {1, 0, 0, 1}, outer[4] = {0, 1, 1, 0};
+  char file[256];
+  cyc_surface* s;
+  check(ctx, cyc_dupin_surface_create(ctx, d, inner, NULL, -1, 1, &s), "cyc_dupin_surface_create");
+  snprintf(file, sizeof file, "%s_inner", name);
+  write_surface(ctx, s, dir, file, implicit, report);
+  cyc_surface_destroy(ctx, s);
+  check(ctx, cyc_dupin_surface_create(ctx, d, outer, NULL, -1, 1, &s), "cyc_dupin_surface_create");
+  snprintf(file, sizeof file, "%s_outer", name);
+  write_surface(ctx, s, dir, file, implicit, report);
+  cyc_surface_destroy(ctx, s);
+}
+
+/* PN certificate on a 64 x 64 grid: | |n| - 1 |, |c . n - lambda|, n . c_xi, n . c_zeta. */
+static void report_pn(cyc_context* ctx, const cyc_dupin* d, FILE* report) {
+  double worst_unit = 0, worst_plane = 0, worst_orth = 0;
+  int i, j;
+  for (i = 0; i < 64; ++i)
+    for (j = 0; j < 64; ++j) {
+      cyc_dupin_point p;
+      const double xi = tan(PI * ((i + 0.5) / 64 - 0.5)), zeta = tan(PI * ((j + 0.5) / 64 - 0.5));
+      double nn, pl, o1, o2, l1, l2;
+      check(ctx, cyc_dupin_eval(ctx, d, xi, zeta, 0.0, &p), "cyc_dupin_eval");
+      nn = sqrt(p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2]);
+      pl = p.point[0] * p.normal[0] + p.point[1] * p.normal[1] + p.point[2] * p.normal[2] - p.lambda;
+      o1 = p.d_xi[0] * p.normal[0] + p.d_xi[1] * p.normal[1] + p.d_xi[2] * p.normal[2];
+      o2 = p.d_zeta[0] * p.normal[0] + p.d_zeta[1] * p.normal[1] + p.d_zeta[2] * p.normal[2];
+      l1 = sqrt(p.d_xi[0] * p.d_xi[0] + p.d_xi[1] * p.d_xi[1] + p.d_xi[2] * p.d_xi[2]) + 1e-300;
+      l2 = sqrt(p.d_zeta[0] * p.d_zeta[0] + p.d_zeta[1] * p.d_zeta[1] + p.d_zeta[2] * p.d_zeta[2]) + 1e-300;
+      if (fabs(nn - 1) > worst_unit) worst_unit = fabs(nn - 1);
+      if (fabs(pl) > worst_plane) worst_plane = fabs(pl);
+      if (fabs(o1) / l1 > worst_orth) worst_orth = fabs(o1) / l1;
+      if (fabs(o2) / l2 > worst_orth) worst_orth = fabs(o2) / l2;
+    }
+  fprintf(report, "  PN on a 64 x 64 grid: max | |n| - 1 | = %.1e, max |c.n - lambda| = %.1e, "
+                  "max |n . c_xi| / |c_xi|, |n . c_zeta| / |c_zeta| = %.1e\n",
+          worst_unit, worst_plane, worst_orth);
+}
+
+static void write_cone(cyc_context* ctx, const cyc_lie_cone* k, const char* dir, const char* name,
+                       FILE* report) {
+  cyc_surface* s;
+  check(ctx, cyc_cone_surface_create(ctx, k, -2, 0, &s), "cyc_cone_surface_create");
+  write_surface(ctx, s, dir, name, NULL, report);
+  cyc_surface_destroy(ctx, s);
+}
+
+static void cyclide_blend_demo(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                               const char* dir, const char* name, FILE* report) {
+  cyc_cyclide_blend b;
+  cyc_cyclide_blend_report c;
+  double q, t0;
+  int i, dim;
+  char file[256];
+  check(ctx, cyc_cyclide_blend_dimension(ctx, r, s, &dim), "cyc_cyclide_blend_dimension");
+  t0 = now_seconds();
+  check(ctx, cyc_cyclide_blend_auto(ctx, r, s, 64, &b, &q), "cyc_cyclide_blend_auto");
+  fprintf(report, "  dim(R + S) = %d: %s blend", dim, b.pieces == 1 ? "single" : "double");
+  if (b.pieces == 2) fprintf(report, " on branch %+d of (43), alpha = %.6g, beta = %.6g", b.branch, b.alpha, b.beta);
+  fprintf(report, "; quality (min/max circle radius) %.3f; chosen in %.2f ms\n", q,
+          1e3 * (now_seconds() - t0));
+  check(ctx, cyc_cyclide_blend_continuity(ctx, r, s, &b, 64, &c), "cyc_cyclide_blend_continuity");
+  fprintf(report, "  G1 at cone R: gap %.1e, angle %.1e rad; joint: gap %.1e, angle %.1e; cone S: gap %.1e, angle %.1e\n",
+          c.gap[0], c.angle[0], c.gap[1], c.angle[1], c.gap[2], c.angle[2]);
+  for (i = 0; i < b.pieces; ++i) {
+    cyc_surface* p;
+    check(ctx, cyc_cyclide_blend_surface_create(ctx, &b, i, &p), "cyc_cyclide_blend_surface_create");
+    snprintf(file, sizeof file, "%s_piece%d", name, i);
+    write_surface(ctx, p, dir, file, NULL, report);
+    cyc_surface_destroy(ctx, p);
+  }
+  snprintf(file, sizeof file, "%s_cone_r", name);
+  write_cone(ctx, r, dir, file, report);
+  snprintf(file, sizeof file, "%s_cone_s", name);
+  write_cone(ctx, s, dir, file, report);
+}
+
+static void dupin_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  cyc_lie_sphere sph[3], inv[3];
+  cyc_lie_transform T;
+  cyc_dupin d, o, p;
+  cyc_lie_cone r, s;
+  const double centers[3][3] = {{3, 0, 0}, {0, 3, 0}, {-3, 0, 0}};
+  const double center_on[3] = {4, 0, 0};
+  double t0;
+  int i;
+  memset(sph, 0, sizeof sph);
+  for (i = 0; i < 3; ++i) {
+    sph[i].kind = CYC_LIE_SPHERE;
+    memcpy(sph[i].m, centers[i], sizeof centers[i]);
+    sph[i].rho = 1;
+  }
+  t0 = now_seconds();
+  check(ctx, cyc_dupin_from_spheres(ctx, sph, &d), "cyc_dupin_from_spheres");
+  fprintf(report, "\nSeed 003 Algorithm 1: the Dupin cyclide of the spheres touching three unit spheres "
+                  "at (3,0,0), (0,3,0), (-3,0,0) (built in %.1f us)\n", 1e6 * (now_seconds() - t0));
+  fprintf(report, "  Laguerre class %s (Lemma 3.10); expected: the torus (sqrt(x^2+y^2) - 3)^2 + z^2 = 1\n",
+          dupin_class(d.type));
+  g_tube = 1.0;
+  write_dupin(ctx, &d, dir, "dupin_torus", torus_eq, report);
+  report_pn(ctx, &d, report);
+  check(ctx, cyc_dupin_offset(ctx, &d, 0.25, &o), "cyc_dupin_offset");
+  fprintf(report, "  offset by d = 0.25 (Laguerre dilatation of both families): a torus of tube radius 1.25\n");
+  g_tube = 1.25;
+  write_dupin(ctx, &o, dir, "dupin_torus_offset", torus_eq, report);
+  check(ctx, cyc_lie_transform_inversion(ctx, center_on, 2.0, &T), "cyc_lie_transform_inversion");
+  for (i = 0; i < 3; ++i) check(ctx, cyc_lie_transform_apply(ctx, &T, &sph[i], &inv[i]), "apply");
+  check(ctx, cyc_dupin_from_spheres(ctx, inv, &p), "cyc_dupin_from_spheres");
+  fprintf(report, "  inverted at (4,0,0), a point of the torus: Laguerre class %s\n", dupin_class(p.type));
+  {
+    const double xm[4] = {1, 0, 0, 1};
+    cyc_surface* ps;
+    check(ctx, cyc_dupin_surface_create(ctx, &p, xm, NULL, 0.25, 4, &ps), "cyc_dupin_surface_create");
+    write_surface(ctx, ps, dir, "dupin_parabolic", NULL, report);
+    cyc_surface_destroy(ctx, ps);
+  }
+  report_pn(ctx, &p, report);
+
+  fprintf(report, "\nSeed 003 Algorithm 2: an elbow of two unit cylinders whose axes meet 3 from both circles\n");
+  {
+    const double c1[3] = {0, 0, 0}, n1[3] = {0, 0, 1}, c2[3] = {3, 0, 3}, n2[3] = {-1, 0, 0};
+    check(ctx, cyc_cone_from_circle(ctx, c1, n1, 1, 0, 1, &r), "cone");
+    check(ctx, cyc_cone_from_circle(ctx, c2, n2, 1, 0, 1, &s), "cone");
+    cyclide_blend_demo(ctx, &r, &s, dir, "cyclide_elbow", report);
+  }
+  fprintf(report, "\nSeed 003 Algorithm 2: a double cyclide blend of a cylinder and a cone with skew axes\n");
+  {
+    const double c1[3] = {-3, 0, 0}, n1[3] = {1, 0, 0}, c2[3] = {4, 3, 1}, n2[3] = {-1, -0.2, 0.1};
+    check(ctx, cyc_cone_from_circle(ctx, c1, n1, 1, 0, 1, &r), "cone");
+    check(ctx, cyc_cone_from_circle(ctx, c2, n2, 0.8, 0.3, 1, &s), "cone");
+    cyclide_blend_demo(ctx, &r, &s, dir, "cyclide_double", report);
+  }
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -1001,6 +1158,7 @@ int main(int argc, char** argv) {
   nway_demo(ctx, dir, report);
   sqrt_and_implicit_demos(ctx, dir, report);
   skin_demos(ctx, dir, report);
+  dupin_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {
