@@ -16,6 +16,7 @@
 
 #include "cyclide/cyclide.h"
 #include "cyclide/darboux_classify.hpp"
+#include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/implicitize.hpp"
 #include "cyclide/sphere_skin.hpp"
@@ -815,6 +816,41 @@ TEST(AllocFreeLie, DupinEvalAndGrid) {
       bad += cyc_dupin_eval_grid(ctx, &C, xs, 16, zs, 16, NAN, P.data(), nullptr) !=
              CYC_E_NOT_FINITE;
     }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(heap.allocations, 0);
+  EXPECT_EQ(heap.frees, 0);
+  cyc_context_destroy(ctx);
+}
+
+// Seed 003's Algorithm 2: cones, single and double blends (the automatic
+// choice included), quality and continuity reports allocate nothing, in
+// the core and through the C ABI (SPEC §2 tier table).
+TEST(AllocFreeLie, CyclideBlends) {
+  using namespace cyclide;
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  const double c0[3] = {-3, 0, 0}, n0[3] = {1, 0, 0}, c1[3] = {4, 3, 1}, n1[3] = {-1, -0.2, 0.1};
+  int bad = 0;
+  cyc_lie_cone R, S;
+  cyc_cyclide_blend B;
+  cyc_cyclide_blend_report rep;
+  double q = 0;
+  LieCone Rc, Sc;
+  CyclideBlend Bc;
+  CyclideBlendContinuity Cc;
+  const Heap heap = measure([&] {
+    bad += cyc_cone_from_circle(ctx, c0, n0, 1, 0, 1, &R) != CYC_OK;
+    bad += cyc_cone_from_circle(ctx, c1, n1, 0.8, 0.3, 1, &S) != CYC_OK;
+    bad += cyc_cyclide_blend_auto(ctx, &R, &S, 16, &B, &q) != CYC_OK;
+    bad += cyc_cyclide_blend_build(ctx, &R, &S, B.branch, B.alpha, &B) != CYC_OK;
+    bad += cyc_cyclide_blend_quality(ctx, &B, &q) != CYC_OK;
+    bad += cyc_cyclide_blend_continuity(ctx, &R, &S, &B, 8, &rep) != CYC_OK;
+    bad += cyc_cyclide_blend_build(ctx, &R, &R, 1, 0.0, &B) != CYC_E_INVALID_ARGUMENT;
+    bad += cone_from_circle({-3, 0, 0}, {1, 0, 0}, 1, 0, 1, Rc) != Status::ok;
+    bad += cone_from_circle({4, 3, 1}, {-1, -0.2, 0.1}, 0.8, 0.3, 1, Sc) != Status::ok;
+    bad += cyclide_blend_auto(Rc, Sc, Bc, 16, &q) != Status::ok;
+    bad += cyclide_blend_continuity(Rc, Sc, Bc, 8, Cc) != Status::ok;
   });
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(heap.allocations, 0);

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "cyclide/cyclide.h"
+#include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/lie.hpp"
 
@@ -692,4 +693,103 @@ TEST(LieCapiAlloc, ContextAllocatorAndOutOfMemory) {
   EXPECT_EQ(S, kSentinel);
   EXPECT_EQ(C.frees, frees + 1);
   cyc_context_destroy(ctx);
+}
+
+// ------------------------------------------- Algorithm 2 through the C ABI
+
+// The elbow of two unit cylinders (Case I, a quarter torus) and a double
+// blend of a cylinder and a cone: G1 at every circle, the pieces as
+// surfaces agree with the core, statuses and untouched outputs on errors.
+TEST_F(LieCapi, CyclideBlendsOfCones) {
+  const double c1[3] = {0, 0, 0}, n1[3] = {0, 0, 1}, c2[3] = {3, 0, 3}, n2[3] = {-1, 0, 0};
+  cyc_lie_cone R, S;
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c1, n1, 1, 0, 1, &R), CYC_OK);
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c2, n2, 1, 0, 1, &S), CYC_OK);
+  int dim = 0;
+  ASSERT_EQ(cyc_cyclide_blend_dimension(ctx, &R, &S, &dim), CYC_OK);
+  EXPECT_EQ(dim, 3);
+  cyc_cyclide_blend B;
+  ASSERT_EQ(cyc_cyclide_blend_build(ctx, &R, &S, 1, 0.0, &B), CYC_OK);
+  EXPECT_EQ(B.pieces, 1);
+  cyc_cyclide_blend_report rep;
+  ASSERT_EQ(cyc_cyclide_blend_continuity(ctx, &R, &S, &B, 16, &rep), CYC_OK);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_LE(rep.gap[j], 1e-12 * rep.scale);
+    EXPECT_LE(rep.angle[j], 1e-12);
+  }
+  cyc_surface* P = nullptr;
+  ASSERT_EQ(cyc_cyclide_blend_surface_create(ctx, &B, 0, &P), CYC_OK);
+  for (double u : {0.0, 0.4, 1.0}) {
+    double x[3];
+    ASSERT_EQ(cyc_surface_eval(ctx, P, u, 0.7, x, nullptr, nullptr, nullptr), CYC_OK);
+    EXPECT_NEAR(std::hypot(std::hypot(x[0] - 3, x[2]) - 3, x[1]), 1.0, 1e-12);  // the torus
+  }
+  cyc_surface_destroy(ctx, P);
+  // The same through the core, bit for bit.
+  cyclide::LieCone Rc, Sc;
+  ASSERT_EQ(cyclide::cone_from_circle({0, 0, 0}, {0, 0, 1}, 1, 0, 1, Rc), cyclide::Status::ok);
+  ASSERT_EQ(cyclide::cone_from_circle({3, 0, 3}, {-1, 0, 0}, 1, 0, 1, Sc), cyclide::Status::ok);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(R.r0[i], Rc.r0[i]);
+    EXPECT_EQ(R.r_plus[i], Rc.r_plus[i]);
+  }
+  // A double blend chosen automatically.
+  const double c3[3] = {4, 3, 1}, n3[3] = {-1, -0.2, 0.1};
+  const double c0[3] = {-3, 0, 0}, n0[3] = {1, 0, 0};
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c0, n0, 1, 0, 1, &R), CYC_OK);
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c3, n3, 0.8, 0.3, 1, &S), CYC_OK);
+  double q = 0;
+  ASSERT_EQ(cyc_cyclide_blend_auto(ctx, &R, &S, 32, &B, &q), CYC_OK);
+  EXPECT_EQ(B.pieces, 2);
+  EXPECT_GT(q, 0.0);
+  double q2 = -1;
+  ASSERT_EQ(cyc_cyclide_blend_quality(ctx, &B, &q2), CYC_OK);
+  EXPECT_EQ(q, q2);
+  ASSERT_EQ(cyc_cyclide_blend_continuity(ctx, &R, &S, &B, 16, &rep), CYC_OK);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_LE(rep.gap[j], 1e-9 * rep.scale);
+    EXPECT_LE(rep.angle[j], 1e-9);
+  }
+  double beta = 0;
+  ASSERT_EQ(cyc_cyclide_blend_beta(ctx, &R, &S, B.branch, B.alpha, &beta), CYC_OK);
+  EXPECT_EQ(beta, B.beta);
+  // Errors leave outputs untouched.
+  cyc_cyclide_blend sentinel;
+  std::memset(&sentinel, 0x5a, sizeof sentinel);
+  cyc_cyclide_blend out = sentinel;
+  EXPECT_EQ(cyc_cyclide_blend_build(ctx, &R, &R, 1, 0.0, &out), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(std::memcmp(&out, &sentinel, sizeof out), 0);
+  EXPECT_EQ(cyc_cyclide_blend_auto(ctx, &R, &S, 4, &out, nullptr), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(std::memcmp(&out, &sentinel, sizeof out), 0);
+  const double t1[3] = {0, 0, 2}, t2[3] = {0, 0, -1};
+  cyc_lie_cone T1, T2;
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c1, n1, 1, 0, 1, &T1), CYC_OK);
+  ASSERT_EQ(cyc_cone_from_circle(ctx, t1, t2, 1, 0, -1, &T2), CYC_OK);
+  EXPECT_EQ(cyc_cyclide_blend_build(ctx, &T1, &T2, 1, 0.0, &out),
+            CYC_E_TANGENT_GENERATING_SPHERES);
+  EXPECT_EQ(std::memcmp(&out, &sentinel, sizeof out), 0);
+  cyc_lie_cone bad = R;
+  bad.r0[0] += 1;  // not neutral
+  EXPECT_EQ(cyc_cyclide_blend_dimension(ctx, &bad, &S, &dim), CYC_E_NOT_ON_LIE_QUADRIC);
+  cyc_cyclide_blend corrupt = B;
+  corrupt.piece[1].theta[7] += 0.5;  // not in O(4,2)
+  EXPECT_EQ(cyc_cyclide_blend_quality(ctx, &corrupt, &q2), CYC_E_INVALID_ARGUMENT);
+  corrupt = B;
+  corrupt.pieces = 3;
+  EXPECT_EQ(cyc_cyclide_blend_surface_create(ctx, &corrupt, 0, &P), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(cyc_cyclide_blend_surface_create(ctx, &B, 2, &P), CYC_E_INVALID_ARGUMENT);
+  // A cone from a Dupin surface (canal), and a ringed surface has none.
+  cyc_surface* tor = nullptr;
+  cyc_dupin D;
+  cyc_lie_sphere sp[3];
+  const double cs[3][3] = {{3, 0, 0}, {0, 3, 0}, {-3, 0, 0}};
+  for (int i = 0; i < 3; ++i) sp[i] = sphere(cs[i][0], cs[i][1], cs[i][2], 1);
+  ASSERT_EQ(cyc_dupin_from_spheres(ctx, sp, &D), CYC_OK);
+  ASSERT_EQ(cyc_dupin_surface_create(ctx, &D, nullptr, nullptr, -0.5, 0.5, &tor), CYC_OK);
+  cyc_lie_cone K;
+  ASSERT_EQ(cyc_cone_from_surface(ctx, tor, 0.5, 1, 1, &K), CYC_OK);
+  double cc[3], nn[3], rr = 0;
+  ASSERT_EQ(cyc_cone_circle(ctx, &K, cc, nn, &rr), CYC_OK);
+  EXPECT_NEAR(rr, 1.0, 1e-12);  // the torus' meridian circles have radius 1
+  cyc_surface_destroy(ctx, tor);
 }

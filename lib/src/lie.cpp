@@ -97,11 +97,15 @@ Diagonalized diagonalize(const SmallMatrix& G, double zero_tol) {
   for (int i = 0; i < k; ++i) order[i] = i;
   const SmallVector& l = eig.eigenvalues();
   auto rank_of = [&](int i) { return l[i] > zero_tol ? 0 : (l[i] < -zero_tol ? 1 : 2); };
-  std::stable_sort(order, order + k, [&](int a, int b) {
+  auto before = [&](int a, int b) {
     const int ra = rank_of(a), rb = rank_of(b);
     if (ra != rb) return ra < rb;
     return std::abs(l[a]) > std::abs(l[b]);
-  });
+  };
+  // Insertion sort (k <= 6): std::stable_sort allocates a buffer, and the
+  // core is allocation-free (tests/alloc_test.cpp).
+  for (int i = 1; i < k; ++i)
+    for (int j = i; j > 0 && before(order[j], order[j - 1]); --j) std::swap(order[j], order[j - 1]);
   Diagonalized D;
   D.combination.resize(k, k);
   D.eigenvalues.resize(k);
