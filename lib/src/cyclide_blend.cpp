@@ -290,11 +290,29 @@ Status cone_from_surface(const Surface& S, double u, int direction, int orientat
   return cone_from_spheres(m, so * rho, sd * dm, so * sd * drho, out);
 }
 
-Status cone_circle(const LieCone& R, Vec3d& center, Vec3d& normal, double& radius) {
+namespace {
+// The normalized cone read back as its sphere family (m + h dm, rho + h drho):
+// (4) halves the e1..e3 and er coordinates of r0 and of its derivative r+.
+struct ConeSpheres {
+  Vec3d m, dm;
+  double rho, drho;
+};
+Status cone_spheres(const LieCone& R, ConeSpheres& K) {
   LieCone C;
   if (Status st = normalize_cone(R, C); st != Status::ok) return st;
-  const Vec3d m = 0.5 * C.r0.head<3>(), dm = 0.5 * C.r_plus.head<3>();
-  const double rho = 0.5 * C.r0[kER], drho = 0.5 * C.r_plus[kER];
+  K.m = 0.5 * C.r0.head<3>();
+  K.dm = 0.5 * C.r_plus.head<3>();
+  K.rho = 0.5 * C.r0[kER];
+  K.drho = 0.5 * C.r_plus[kER];
+  return Status::ok;
+}
+}  // namespace
+
+Status cone_circle(const LieCone& R, Vec3d& center, Vec3d& normal, double& radius) {
+  ConeSpheres K;
+  if (Status st = cone_spheres(R, K); st != Status::ok) return st;
+  const Vec3d &m = K.m, &dm = K.dm;
+  const double rho = K.rho, drho = K.drho;
   const double mm = dm.squaredNorm();
   center = m - (rho * drho / mm) * dm;
   normal = dm / std::sqrt(mm);
@@ -303,10 +321,10 @@ Status cone_circle(const LieCone& R, Vec3d& center, Vec3d& normal, double& radiu
 }
 
 Status cone_surface(const LieCone& R, double h0, double h1, Surface& out) {
-  LieCone C;
-  if (Status st = normalize_cone(R, C); st != Status::ok) return st;
-  const Vec3d m = 0.5 * C.r0.head<3>(), dm = 0.5 * C.r_plus.head<3>();
-  const double rho = 0.5 * C.r0[kER], drho = 0.5 * C.r_plus[kER];
+  ConeSpheres K;
+  if (Status st = cone_spheres(R, K); st != Status::ok) return st;
+  const Vec3d &m = K.m, &dm = K.dm;
+  const double rho = K.rho, drho = K.drho;
   const double mm = dm.squaredNorm();
   const double q = std::sqrt(1 - drho * drho / mm);
   // Seed 000 eq. (1) on the linear spine and radius: the circle's centre
@@ -529,9 +547,9 @@ namespace {
 // (-1, -1, -1), 0.5, -0.5, -1), S = cone_from_circle((3.40625, -4, -4),
 // (-0.9629, -0.2021, -0.1787), 0.5, 0.5, -1), branch -1, alpha = tan(pi/6)).
 double cone_start(const LieCone& C0) {
-  LieCone C;
-  if (normalize_cone(C0, C) != Status::ok) return -1.0;
-  const double rho = 0.5 * C.r0[kER], drho = 0.5 * C.r_plus[kER];
+  ConeSpheres K;
+  if (cone_spheres(C0, K) != Status::ok) return -1.0;
+  const double rho = K.rho, drho = K.drho;
   if (drho == 0) return -1.0;
   const double apex = -rho / drho;
   return (apex < 0 && apex > -2.0) ? 0.5 * apex : -1.0;  // stay at most half way

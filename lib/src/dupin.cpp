@@ -263,25 +263,28 @@ Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
 }
 
 namespace {
-Status family_sphere(const Lie6d& x, LieSphere& out) { return lie_sphere(x, out); }
-bool valid(HomogeneousParameter t) {
-  return std::isfinite(t.p0) && std::isfinite(t.p1) && !(t.p0 == 0 && t.p1 == 0);
+// A homogeneous parameter scaled to max(|p0|, |p1|) = 1 (the families are
+// homogeneous of degree 2): not_finite for NaN/Inf, invalid_argument for 0 : 0.
+Status scaled(HomogeneousParameter t, double& p0, double& p1) {
+  if (!std::isfinite(t.p0) || !std::isfinite(t.p1)) return Status::not_finite;
+  if (t.p0 == 0 && t.p1 == 0) return Status::invalid_argument;
+  const double s = std::max(std::abs(t.p0), std::abs(t.p1));
+  p0 = t.p0 / s;
+  p1 = t.p1 / s;
+  return Status::ok;
 }
 }  // namespace
 
 Status dupin_sphere_xi(const DupinCyclide& D, HomogeneousParameter xi, LieSphere& out) {
-  if (!valid(xi)) return std::isfinite(xi.p0) && std::isfinite(xi.p1) ? Status::invalid_argument
-                                                                        : Status::not_finite;
-  const double s = std::max(std::abs(xi.p0), std::abs(xi.p1));
-  return family_sphere(D.sphere_xi(xi.p0 / s, xi.p1 / s), out);
+  double p0, p1;
+  if (Status st = scaled(xi, p0, p1); st != Status::ok) return st;
+  return lie_sphere(D.sphere_xi(p0, p1), out);
 }
 
 Status dupin_sphere_zeta(const DupinCyclide& D, HomogeneousParameter zeta, LieSphere& out) {
-  if (!valid(zeta))
-    return std::isfinite(zeta.p0) && std::isfinite(zeta.p1) ? Status::invalid_argument
-                                                            : Status::not_finite;
-  const double s = std::max(std::abs(zeta.p0), std::abs(zeta.p1));
-  return family_sphere(D.sphere_zeta(zeta.p0 / s, zeta.p1 / s), out);
+  double p0, p1;
+  if (Status st = scaled(zeta, p0, p1); st != Status::ok) return st;
+  return lie_sphere(D.sphere_zeta(p0, p1), out);
 }
 
 DupinCyclide dupin_offset(const DupinCyclide& D, double d) {
