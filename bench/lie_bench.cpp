@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "cyclide/cyclide.h"
 #include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/surface.hpp"
@@ -158,6 +159,47 @@ void BM_CyclideBlendDouble(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Algorithm 2's free parameter chosen by the core (scan of 64 angles on
+// both branches + golden section, quality = min / max circle radius).
+void BM_CyclideBlendAuto(benchmark::State& state) {
+  LieCone R, S;
+  if (!double_cones(R, S)) return state.SkipWithError("cones failed");
+  CyclideBlend B;
+  Status st = Status::ok;
+  for (auto _ : state) {
+    st = cyclide_blend_auto(R, S, B);
+    benchmark::DoNotOptimize(B);
+  }
+  if (st != Status::ok) state.SkipWithError(status_name(st));
+  state.SetItemsProcessed(state.iterations());
+}
+
+// The optimizer tier (C ABI): the default objective (fairness + regularity)
+// scanned at 64 angles per branch, refined by Ceres.
+void BM_CyclideBlendOptimize(benchmark::State& state) {
+  LieCone R, S;
+  if (!double_cones(R, S)) return state.SkipWithError("cones failed");
+  cyc_lie_cone r, s;
+  for (int i = 0; i < 6; ++i) {
+    r.r0[i] = R.r0[i], r.r_plus[i] = R.r_plus[i];
+    s.r0[i] = S.r0[i], s.r_plus[i] = S.r_plus[i];
+  }
+  cyc_context* ctx = nullptr;
+  if (cyc_context_create(nullptr, &ctx) != CYC_OK) return state.SkipWithError("context");
+  cyc_cyclide_blend B;
+  cyc_optimize_summary sum;
+  int rc = CYC_OK;
+  for (auto _ : state) {
+    rc = cyc_optimize_cyclide_blend(ctx, &r, &s, nullptr, nullptr, &B, &sum);
+    benchmark::DoNotOptimize(B);
+  }
+  if (rc != CYC_OK) state.SkipWithError(cyc_context_last_error(ctx));
+  state.counters["iterations"] = sum.iterations;
+  state.counters["cost"] = sum.final_cost;
+  cyc_context_destroy(ctx);
+  state.SetItemsProcessed(state.iterations());
+}
+
 }  // namespace
 
 BENCHMARK(BM_DupinFromSpheres);
@@ -166,3 +208,5 @@ BENCHMARK(BM_DupinGridLoop)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DupinGridSurface)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CyclideBlendSingle);
 BENCHMARK(BM_CyclideBlendDouble);
+BENCHMARK(BM_CyclideBlendAuto)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CyclideBlendOptimize)->Unit(benchmark::kMillisecond);

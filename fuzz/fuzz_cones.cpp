@@ -168,12 +168,46 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   cyc_cyclide_blend B;
   std::memset(&B, 0xcd, sizeof B);
   const cyc_cyclide_blend sentinel = B;
-  const bool automatic = in.flag();
-  FZ_LOG("branch %d alpha %.17g automatic %d", branch, alpha, int(automatic));
-  const int rr = automatic
-                     ? cyc_cyclide_blend_auto(st.ctx, &R, &S, in.range(8, 24), &B, nullptr)
-                     : cyc_cyclide_blend_build(st.ctx, &R, &S, branch, alpha, &B);
-  st.check(automatic ? "cyc_cyclide_blend_auto" : "cyc_cyclide_blend_build", rr);
+  // 0: Algorithm 2 at (branch, alpha); 1: the core's automatic choice;
+  // 2 (rarely, a Ceres solve): the optimizer tier with a random objective.
+  const int mode = in.rarely() ? 2 : int(in.flag());
+  FZ_LOG("branch %d alpha %.17g mode %d", branch, alpha, mode);
+  cyc_optimize_summary sum;
+  std::memset(&sum, 0xcd, sizeof sum);
+  int rr = CYC_OK;
+  if (mode == 0) {
+    rr = cyc_cyclide_blend_build(st.ctx, &R, &S, branch, alpha, &B);
+  } else if (mode == 1) {
+    rr = cyc_cyclide_blend_auto(st.ctx, &R, &S, in.range(8, 24), &B, nullptr);
+  } else {
+    cyc_cyclide_blend_objective o;
+    cyc_cyclide_blend_objective_init(&o);
+    cyc_cyclide_blend_options p;
+    cyc_cyclide_blend_options_init(&p);
+    o.fairness = in.flag() ? 1.0 : in.wild();
+    o.joint_radius = in.flag() ? 0.0 : in.wild();
+    o.min_extent = in.flag() ? 0.05 : in.wild();
+    const double point[3] = {in.wild(), in.wild(), in.wild()};
+    const cyc_blend_obstacle obstacle = {{in.wild(), in.wild(), in.wild()}, in.wild()};
+    if (in.flag()) o.joint_points = point, o.joint_point_count = 1;
+    if (in.flag()) o.obstacles = &obstacle, o.obstacle_count = 1;
+    o.circles = in.rarely() ? in.range(-1, 300) : in.range(4, 8);
+    p.samples = in.rarely() ? in.range(0, 5000) : in.range(8, 16);
+    p.branch = in.rarely() ? in.range(-2, 2) : 0;
+    p.max_iterations = in.range(0, 6);
+    rr = cyc_optimize_cyclide_blend(st.ctx, &R, &S, &o, &p, &B, &sum);
+  }
+  static const char* const names[3] = {"cyc_cyclide_blend_build", "cyc_cyclide_blend_auto",
+                                       "cyc_optimize_cyclide_blend"};
+  st.check(names[mode], rr);
+  if (mode == 2 && rr == CYC_OK)
+    FZ_CHECK(std::isfinite(sum.final_cost) && sum.final_cost <= sum.initial_cost,
+             "optimizer cost %g -> %g", sum.initial_cost, sum.final_cost);
+  if (mode == 2 && rr != CYC_OK) {
+    cyc_optimize_summary untouched;
+    std::memset(&untouched, 0xcd, sizeof untouched);
+    FZ_CHECK(std::memcmp(&sum, &untouched, sizeof sum) == 0, "summary written on error");
+  }
   if (rr != CYC_OK) {
     FZ_CHECK(std::memcmp(&B, &sentinel, sizeof B) == 0, "blend written on error");
   } else {

@@ -541,3 +541,76 @@ TEST(Optimizer, SkinTangentsThroughTheCApi) {
   EXPECT_EQ(std::memcmp(&so2, &blank, sizeof so2), 0);
   cyc_context_destroy(ctx);
 }
+
+// Seed 003 §4, Case II through the C ABI: the double cyclide blend of two
+// cylinders with offset axes, its family parameter chosen for a wanted
+// joint radius; the parameter query; validation; outputs untouched on error.
+TEST(Optimizer, CyclideBlendFamilyParameter) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  cyc_lie_cone R, S;
+  const double c0[3] = {0, 0, 0}, n0[3] = {0, 0, 1}, c1[3] = {2, 0, 3}, n1[3] = {0, 0, -1};
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c0, n0, 1, 0, 1, &R), CYC_OK);
+  ASSERT_EQ(cyc_cone_from_circle(ctx, c1, n1, 1, 0, 1, &S), CYC_OK);
+  // The joint radius of the blend at alpha = tan(0.2) on branch -1 is the target.
+  cyc_cyclide_blend T;
+  ASSERT_EQ(cyc_cyclide_blend_build(ctx, &R, &S, -1, std::tan(0.2), &T), CYC_OK);
+  double jc[3], jn[3], jr = 0;
+  ASSERT_EQ(cyc_cyclide_blend_circle(ctx, &T, 0, 0, 1.0, jc, jn, &jr), CYC_OK);
+  EXPECT_NEAR(std::sqrt(jn[0] * jn[0] + jn[1] * jn[1] + jn[2] * jn[2]), 1.0, 1e-14);
+  cyc_cyclide_blend_objective o;
+  cyc_cyclide_blend_objective_init(&o);
+  EXPECT_EQ(o.fairness, 1.0);
+  EXPECT_EQ(o.circles, 16);
+  o.fairness = 0;
+  o.joint_radius = jr;
+  cyc_cyclide_blend_options p;
+  cyc_cyclide_blend_options_init(&p);
+  EXPECT_EQ(p.samples, 64);
+  cyc_cyclide_blend B;
+  cyc_optimize_summary sum;
+  ASSERT_EQ(cyc_optimize_cyclide_blend(ctx, &R, &S, &o, &p, &B, &sum), CYC_OK)
+      << cyc_context_last_error(ctx);
+  EXPECT_EQ(B.pieces, 2);
+  EXPECT_EQ(B.branch, -1);
+  double r = 0;
+  ASSERT_EQ(cyc_cyclide_blend_circle(ctx, &B, 0, 0, 1.0, jc, jn, &r), CYC_OK);
+  EXPECT_NEAR(r, jr, 1e-6 * jr);
+  EXPECT_LE(sum.final_cost, sum.initial_cost);
+  EXPECT_LE(sum.final_cost, 1e-12);
+  cyc_cyclide_blend_report rep;
+  ASSERT_EQ(cyc_cyclide_blend_continuity(ctx, &R, &S, &B, 16, &rep), CYC_OK);
+  for (int j = 0; j < 3; ++j) EXPECT_LE(rep.angle[j], 1e-9);
+  // The free parameter: one family angle on branch -1.
+  int count = -1;
+  ASSERT_EQ(cyc_optimize_cyclide_blend_parameters(ctx, &R, &S, &o, &p, nullptr, 0, &count),
+            CYC_OK);
+  ASSERT_EQ(count, 1);
+  cyc_free_parameter fp;
+  EXPECT_EQ(cyc_optimize_cyclide_blend_parameters(ctx, &R, &S, &o, &p, &fp, 0, &count),
+            CYC_E_BUFFER_TOO_SMALL);
+  ASSERT_EQ(cyc_optimize_cyclide_blend_parameters(ctx, &R, &S, &o, &p, &fp, 1, &count), CYC_OK);
+  EXPECT_EQ(fp.role, CYC_PARAMETER_FAMILY);
+  EXPECT_EQ(fp.index, -1);
+  EXPECT_LE(fp.lower, fp.start);
+  EXPECT_LE(fp.start, fp.upper);
+  // Defaults (NULL objective and options): the fairest blend.
+  ASSERT_EQ(cyc_optimize_cyclide_blend(ctx, &R, &S, nullptr, nullptr, &B, nullptr), CYC_OK);
+  // Errors leave the outputs alone.
+  cyc_cyclide_blend untouched;
+  std::memset(&untouched, 0xcd, sizeof untouched);
+  cyc_cyclide_blend X = untouched;
+  o.circles = 2;
+  EXPECT_EQ(cyc_optimize_cyclide_blend(ctx, &R, &S, &o, &p, &X, &sum), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(std::memcmp(&X, &untouched, sizeof X), 0);
+  cyc_cyclide_blend_objective_init(&o);
+  o.joint_point_count = 1;  // NULL points
+  EXPECT_EQ(cyc_optimize_cyclide_blend(ctx, &R, &S, &o, &p, &X, &sum), CYC_E_NULL_ARGUMENT);
+  cyc_cyclide_blend_objective_init(&o);
+  p.branch = 1;  // only the folding branch
+  EXPECT_EQ(cyc_optimize_cyclide_blend(ctx, &R, &S, &o, &p, &X, &sum), CYC_E_BLEND_FOLDS);
+  EXPECT_NE(std::string(cyc_context_last_error(ctx)), "");
+  EXPECT_EQ(std::memcmp(&X, &untouched, sizeof X), 0);
+  EXPECT_EQ(cyc_optimize_cyclide_blend(ctx, nullptr, &S, &o, &p, &X, &sum), CYC_E_NULL_ARGUMENT);
+  cyc_context_destroy(ctx);
+}

@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "capi_internal.hpp"
+#include "lie_internal.hpp"
 #include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/lie.hpp"
@@ -768,9 +769,11 @@ int cyc_dupin_surface_create(cyc_context* ctx, const cyc_dupin* cyclide, const d
 
 // ------------------------------------------- cyclide blends (Algorithm 2)
 
-namespace {
+LieCone cyclide::capi::cone_in(const cyc_lie_cone* c) {
+  return {lie6(c->r0), lie6(c->r_plus)};
+}
 
-LieCone cone_in(const cyc_lie_cone* c) { return {lie6(c->r0), lie6(c->r_plus)}; }
+namespace {
 
 void cone_out(const LieCone& K, cyc_lie_cone* out) {
   cyc_lie_cone c;
@@ -779,7 +782,9 @@ void cone_out(const LieCone& K, cyc_lie_cone* out) {
   *out = c;
 }
 
-Outcome cone_status(const char* fn, Status s) {
+}  // namespace
+
+Outcome cyclide::capi::cone_status(const char* fn, Status s) {
   switch (s) {
     case Status::unsupported:
       return fail(int(s), "%s: the generating sphere r0 is a plane (a planar tangent cone, "
@@ -792,6 +797,8 @@ Outcome cone_status(const char* fn, Status s) {
     default: return from_core(fn, s);
   }
 }
+
+namespace {
 
 // A caller's blend: 1 or 2 pieces, each a valid cyc_dupin.
 Outcome blend_in(const char* fn, const cyc_cyclide_blend* b, CyclideBlend& B) {
@@ -809,7 +816,9 @@ Outcome blend_in(const char* fn, const cyc_cyclide_blend* b, CyclideBlend& B) {
   return ok();
 }
 
-Outcome blend_out(const char* fn, const CyclideBlend& B, cyc_cyclide_blend* out) {
+}  // namespace
+
+Outcome cyclide::capi::blend_out(const char* fn, const CyclideBlend& B, cyc_cyclide_blend* out) {
   cyc_cyclide_blend c;
   std::memset(&c, 0, sizeof c);
   c.pieces = B.pieces;
@@ -822,8 +831,6 @@ Outcome blend_out(const char* fn, const CyclideBlend& B, cyc_cyclide_blend* out)
   *out = c;
   return ok();
 }
-
-}  // namespace
 
 extern "C" {
 
@@ -996,6 +1003,30 @@ int cyc_cyclide_blend_auto(cyc_context* ctx, const cyc_lie_cone* r, const cyc_li
     if (Outcome o = blend_out(fn, B, &c); o.status) return o;
     *out = c;
     if (quality) *quality = q;
+    return ok();
+  });
+}
+
+int cyc_cyclide_blend_circle(cyc_context* ctx, const cyc_cyclide_blend* blend, int piece,
+                             int family, double s, double center[3], double normal[3],
+                             double* radius) {
+  const char* fn = "cyc_cyclide_blend_circle";
+  return run(ctx, fn, [&] {
+    REQUIRE(blend);
+    REQUIRE(center);
+    REQUIRE(normal);
+    REQUIRE(radius);
+    CyclideBlend B;
+    if (Outcome o = blend_in(fn, blend, B); o.status) return o;
+    if (piece < 0 || piece >= B.pieces || (family != 0 && family != 1))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: piece %d of %d, family %d (0 or 1)", fn, piece,
+                  B.pieces, family);
+    BlendCircle C;
+    if (Status st = cyclide_blend_circle(B, piece, family, s, C); st != Status::ok)
+      return from_core(fn, st);
+    put3(center, C.center);
+    put3(normal, C.normal);
+    *radius = C.radius;
     return ok();
   });
 }

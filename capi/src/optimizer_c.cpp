@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "capi_internal.hpp"
+#include "lie_internal.hpp"
 
 #ifndef CYCLIDE_HAVE_CERES
 #define CYCLIDE_HAVE_CERES 0
@@ -14,6 +15,9 @@
 #include "optim/blend_optimizer.hpp"
 #include "optim/bump_optimizer.hpp"
 #include "optim/closest_point.hpp"
+#include "optim/cyclide_blend_optimizer.hpp"
+static_assert(CYC_PARAMETER_FAMILY == int(cyclide::optim::ParameterRole::family),
+              "parameter roles");
 #endif
 
 using namespace cyclide;
@@ -110,6 +114,23 @@ optim::BumpOptions bump_options_of(const cyc_bump_options* options) {
   P.gradient_tolerance = p.gradient_tolerance;
   P.parameter_tolerance = p.parameter_tolerance;
   return P;
+}
+
+cyc_optimize_summary summary_of(const optim::BlendSummary& R) {
+  cyc_optimize_summary m;
+  std::memset(&m, 0, sizeof m);
+  m.initial_cost = R.initial_cost;
+  m.final_cost = R.final_cost;
+  m.iterations = R.iterations;
+  m.seconds = R.seconds;
+  m.termination = int(R.termination);
+  m.fairness = R.fairness;
+  m.regularity = R.regularity;
+  m.targets = R.targets;
+  m.obstacles = R.obstacles;
+  m.length_scale = R.length_scale;
+  m.fairness_scale = R.fairness_scale;
+  return m;
 }
 
 // The size query / copy of the _parameters entry points: all or nothing.
@@ -210,22 +231,7 @@ int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
     };
     if (start_out) put_end(*start, so, start_out);
     if (end_out) put_end(*end, eo, end_out);
-    if (summary) {
-      cyc_optimize_summary m;
-      std::memset(&m, 0, sizeof m);
-      m.initial_cost = R.initial_cost;
-      m.final_cost = R.final_cost;
-      m.iterations = R.iterations;
-      m.seconds = R.seconds;
-      m.termination = int(R.termination);
-      m.fairness = R.fairness;
-      m.regularity = R.regularity;
-      m.targets = R.targets;
-      m.obstacles = R.obstacles;
-      m.length_scale = R.length_scale;
-      m.fairness_scale = R.fairness_scale;
-      *summary = m;
-    }
+    if (summary) *summary = summary_of(R);
     return made;
 #else
     (void)kind; (void)K; (void)t0; (void)t1; (void)objective; (void)options;
@@ -316,19 +322,7 @@ int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a, const cy
       c.kind = int(D.kind);
       *chosen = c;
     }
-    if (summary) {
-      cyc_optimize_summary m;
-      std::memset(&m, 0, sizeof m);
-      m.initial_cost = R.initial_cost;
-      m.final_cost = R.final_cost;
-      m.iterations = R.iterations;
-      m.seconds = R.seconds;
-      m.termination = int(R.termination);
-      m.fairness = R.fairness;
-      m.obstacles = R.obstacles;
-      m.length_scale = R.length_scale;
-      *summary = m;
-    }
+    if (summary) *summary = summary_of(R);
     return ok();
 #else
     (void)blend; (void)start; (void)objective; (void)options; (void)chosen; (void)summary;
@@ -390,6 +384,148 @@ int cyc_optimize_pcurve_bump_parameters(cyc_context* ctx, const cyc_ringed_jet* 
     return emit_parameters(fn, D, params, capacity, count);
 #else
     (void)blend; (void)start; (void)options; (void)params; (void)capacity;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
+  });
+}
+
+void cyc_cyclide_blend_objective_init(cyc_cyclide_blend_objective* o) {
+  if (!o) return;
+  std::memset(o, 0, sizeof *o);
+  o->fairness = 1.0;
+  o->joint_point_weight = 1.0;
+  o->joint_radius_weight = 1.0;
+  o->obstacle_weight = 1.0;
+  o->regularity = 1.0;
+  o->min_extent = 0.05;
+  o->circles = 16;
+}
+
+void cyc_cyclide_blend_options_init(cyc_cyclide_blend_options* p) {
+  if (!p) return;
+  std::memset(p, 0, sizeof *p);
+  p->samples = 64;
+  p->max_iterations = 50;
+  p->function_tolerance = 1e-10;
+  p->gradient_tolerance = 1e-12;
+  p->parameter_tolerance = 1e-10;
+}
+
+}  // extern "C"
+
+#if CYCLIDE_HAVE_CERES
+namespace {
+// The caller's objective and options with the arrays copied into `points`
+// and `obstacles` (which must outlive the returned objective).
+Outcome cyclide_objective_of(const char* fn, const cyc_cyclide_blend_objective* objective,
+                             const cyc_cyclide_blend_options* options,
+                             std::vector<Vec3d>& points,
+                             std::vector<optim::SphereObstacle>& obstacles,
+                             optim::CyclideBlendObjective& O,
+                             optim::CyclideBlendOptimizerOptions& P) {
+  cyc_cyclide_blend_objective o;
+  cyc_cyclide_blend_options p;
+  cyc_cyclide_blend_objective_init(&o);
+  cyc_cyclide_blend_options_init(&p);
+  if (objective) o = *objective;
+  if (options) p = *options;
+  if (o.joint_point_count < 0 || o.obstacle_count < 0)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: negative joint point or obstacle count", fn);
+  if ((o.joint_point_count > 0 && !o.joint_points) || (o.obstacle_count > 0 && !o.obstacles))
+    return fail(CYC_E_NULL_ARGUMENT, "%s: NULL joint_points or obstacles with a positive count",
+                fn);
+  points.resize(size_t(o.joint_point_count));
+  for (int q = 0; q < o.joint_point_count; ++q) points[size_t(q)] = vec(o.joint_points + 3 * q);
+  obstacles.resize(size_t(o.obstacle_count));
+  for (int q = 0; q < o.obstacle_count; ++q) {
+    obstacles[size_t(q)].center = vec(o.obstacles[q].center);
+    obstacles[size_t(q)].radius = o.obstacles[q].radius;
+  }
+  O.fairness = o.fairness;
+  O.joint_points = points.data();
+  O.joint_point_count = o.joint_point_count;
+  O.joint_point_weight = o.joint_point_weight;
+  O.joint_radius = o.joint_radius;
+  O.joint_radius_weight = o.joint_radius_weight;
+  O.obstacles = obstacles.data();
+  O.obstacle_count = o.obstacle_count;
+  O.clearance = o.clearance;
+  O.obstacle_weight = o.obstacle_weight;
+  O.regularity = o.regularity;
+  O.min_extent = o.min_extent;
+  O.circles = o.circles;
+  P.samples = p.samples;
+  P.branch = p.branch;
+  P.max_iterations = p.max_iterations;
+  P.function_tolerance = p.function_tolerance;
+  P.gradient_tolerance = p.gradient_tolerance;
+  P.parameter_tolerance = p.parameter_tolerance;
+  return ok();
+}
+}  // namespace
+#endif
+
+extern "C" {
+
+int cyc_optimize_cyclide_blend(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
+                               const cyc_cyclide_blend_objective* objective,
+                               const cyc_cyclide_blend_options* options, cyc_cyclide_blend* out,
+                               cyc_optimize_summary* summary) {
+  const char* fn = "cyc_optimize_cyclide_blend";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(out);
+#if CYCLIDE_HAVE_CERES
+    std::vector<Vec3d> points;
+    std::vector<optim::SphereObstacle> obstacles;
+    optim::CyclideBlendObjective O;
+    optim::CyclideBlendOptimizerOptions P;
+    if (Outcome e = cyclide_objective_of(fn, objective, options, points, obstacles, O, P);
+        e.status)
+      return e;
+    CyclideBlend B;
+    optim::BlendSummary R;
+    if (Status st = optim::optimize_cyclide_blend(cone_in(r), cone_in(s), O, P, B, R);
+        st != Status::ok)
+      return cone_status(fn, st);
+    cyc_cyclide_blend c;
+    if (Outcome e = blend_out(fn, B, &c); e.status) return e;
+    *out = c;
+    if (summary) *summary = summary_of(R);
+    return ok();
+#else
+    (void)objective; (void)options; (void)summary;
+    return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
+#endif
+  });
+}
+
+int cyc_optimize_cyclide_blend_parameters(cyc_context* ctx, const cyc_lie_cone* r,
+                                          const cyc_lie_cone* s,
+                                          const cyc_cyclide_blend_objective* objective,
+                                          const cyc_cyclide_blend_options* options,
+                                          cyc_free_parameter* params, int capacity, int* count) {
+  const char* fn = "cyc_optimize_cyclide_blend_parameters";
+  return run(ctx, fn, [&]() -> Outcome {
+    REQUIRE(r);
+    REQUIRE(s);
+    REQUIRE(count);
+#if CYCLIDE_HAVE_CERES
+    std::vector<Vec3d> points;
+    std::vector<optim::SphereObstacle> obstacles;
+    optim::CyclideBlendObjective O;
+    optim::CyclideBlendOptimizerOptions P;
+    if (Outcome e = cyclide_objective_of(fn, objective, options, points, obstacles, O, P);
+        e.status)
+      return e;
+    optim::FreeParameters D;
+    if (Status st = optim::describe_cyclide_blend_parameters(cone_in(r), cone_in(s), O, P, D);
+        st != Status::ok)
+      return cone_status(fn, st);
+    return emit_parameters(fn, D, params, capacity, count);
+#else
+    (void)objective; (void)options; (void)params; (void)capacity;
     return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
 #endif
   });

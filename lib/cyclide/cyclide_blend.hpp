@@ -107,19 +107,52 @@ Status cyclide_blend_beta(const LieCone& R, const LieCone& S, int branch, double
 Status cyclide_blend(const LieCone& R, const LieCone& S, int branch, double alpha,
                      CyclideBlend& out);
 
+// A circle of a blend's patch (quality measures and the optimizer tier).
+struct BlendCircle {
+  Vec3d center = Vec3d::Zero();
+  Vec3d normal = Vec3d::UnitZ();  // unit
+  double radius = 0;
+};
+
+// Circle s of piece i's patch, defined geometrically (independent of how
+// the Witt extension happened to parameterize the second family):
+//   family 0: the circle at u = s in [0, 1] (xi = s / (1 - s)), a whole
+//             zeta-circle of the patch (u = 0 and 1 are the glued circles);
+//   family 1: the circle of the second family through the point of the
+//             first glued circle (u = 0) at angle s (radians) from the
+//             direction normal.unitOrthogonal() of that circle; its arc
+//             xi in [0, infinity] lies in the patch, the rest does not.
+// Family 1 is found by inverting the circle's Mobius parameter f(zeta) of
+// dupin_frame at the point, then through the points at xi = 0, 1, infinity.
+// Normals are unit with their largest component (by magnitude) positive, so
+// that the angles s mean the same points however the construction oriented
+// the circle.
+// Allocation-free. Statuses: invalid_argument (piece, family, s outside
+// [0, 1] for family 0), not_finite (s), point_at_infinity (a circle through
+// infinity: a line), those of dupin_frame and dupin_eval_homogeneous.
+Status cyclide_blend_circle(const CyclideBlend& B, int piece, int family, double s,
+                            BlendCircle& out);
+
 // Algorithm 2 with its free parameter chosen: Case I as above; Case II
 // scans phi in (-pi/2, pi/2), alpha = tan(phi), at `samples` points on both
 // branches (45's asymptote and failing points skipped), keeps the blend whose
 // circles vary least (quality = min radius / max radius over 17 circles of
 // the first family and 16 of the second per piece: both principal
-// curvatures of a cyclide are constant along its circles) and refines phi by golden-section search between the best sample's
-// neighbours. *quality (may be null) receives the chosen blend's quality.
+// curvatures of a cyclide are constant along its circles) and refines phi
+// by golden-section search between the best sample's neighbours. A sample
+// becomes the best only if its pieces also build as surfaces
+// (cyclide_blend_surface), so the result always does. *quality (may be
+// null) receives the chosen blend's quality. The optimizer tier's
+// optimize_cyclide_blend (optim/cyclide_blend_optimizer.hpp) chooses phi
+// against a user objective instead.
 // When no sample gives a valid blend: blend_folds if some sample folded,
 // otherwise singular_point (every sample pinched). samples in [8, 4096].
 Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
                           int samples = 64, double* quality = nullptr);
-// The quality measure above (min / max circle radius of the patches; 0 if
-// a circle runs through infinity).
+// The quality measure above (min / max circle radius of the patches over
+// cyclide_blend_circle's family 0 at u = k/16, k = 0..16, and family 1 at
+// the angles 2 pi (k + 1/2) / 16; 0 if a family-1 circle runs through
+// infinity). Errors of family-0 circles are returned.
 Status cyclide_blend_quality(const CyclideBlend& B, double& quality);
 
 // The patch of piece i as a circle-family surface (u in [0, 1] -> xi in

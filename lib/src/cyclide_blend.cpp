@@ -430,57 +430,136 @@ Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double al
   return Status::ok;
 }
 
+namespace {
+DupinView patch_view(const CyclideBlend& B, int i);
+}  // namespace
+
 Status cyclide_blend_surface(const CyclideBlend& B, int i, Surface& out) {
   if (i < 0 || i >= B.pieces) return Status::invalid_argument;
-  DupinView V;
-  V.cyclide = B.piece[i].cyclide;
-  // u in [0, 1] -> xi = u / (1 - u): homogeneous (u : 1 - u).
-  const double xm[4] = {1, 0, -1, 1};
-  std::copy(xm, xm + 4, V.xi_map);
-  return make_dupin_surface(V, 0.0, 1.0, out);
+  return make_dupin_surface(patch_view(B, i), 0.0, 1.0, out);
 }
 
 namespace {
-// Circumradius of three points (infinite for collinear ones).
-double circumradius(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const double ab = (a - b).norm(), bc = (b - c).norm(), ca = (c - a).norm();
-  const double twice_area = (b - a).cross(c - a).norm();
-  return twice_area > 0 ? ab * bc * ca / (2 * twice_area) : HUGE_VAL;
+// A circle's unit normal with a sign independent of how the construction
+// parameterized the circle: its largest component (by magnitude) positive.
+Vec3d canonical_normal(const Vec3d& a) {
+  Vec3d n = a.normalized();
+  Eigen::Index k = 0;
+  n.cwiseAbs().maxCoeff(&k);
+  return n[k] < 0 ? Vec3d(-n) : n;
+}
+
+// The circle through three points (false for collinear ones: a line).
+bool circumcircle(const Vec3d& a, const Vec3d& b, const Vec3d& c, BlendCircle& out) {
+  const Vec3d e1 = b - a, e2 = c - a, axis = e1.cross(e2);
+  const double aa = axis.squaredNorm();
+  const double size = std::max(e1.squaredNorm(), e2.squaredNorm());
+  if (!(aa > 1e-24 * size * size)) return false;
+  const Vec3d o = a + (e1.squaredNorm() * e2.cross(axis) + e2.squaredNorm() * axis.cross(e1)) /
+                          (2 * aa);
+  out.center = o;
+  out.normal = canonical_normal(axis);
+  out.radius = (a - o).norm();
+  return std::isfinite(out.radius);
+}
+
+// Piece i's patch as a circle-family view: u in [0, 1] -> xi = u / (1 - u)
+// (homogeneous (u : 1 - u)).
+DupinView patch_view(const CyclideBlend& B, int i) {
+  DupinView V;
+  V.cyclide = B.piece[i].cyclide;
+  const double xm[4] = {1, 0, -1, 1};
+  std::copy(xm, xm + 4, V.xi_map);
+  return V;
+}
+
+// The homogeneous zeta of the point X on the circle of frame F: eq. (11)
+// turns d = p - o by theta with tan(theta / 2) = |a| / f, and f = a . (d x e)
+// / (R^2 - d . e) for e = X - o (see dupin_frame); f(zeta) = (alpha zeta +
+// beta) / (gamma zeta + delta) inverted, homogeneous so X = p is zeta = inf.
+bool zeta_of_point(const CircleFrame<double>& F, const Vec3d& X, HomogeneousParameter& zeta) {
+  const Vec3d d = F.p - F.o, e = X - F.o;
+  const double num = F.a.dot(d.cross(e)), den = d.squaredNorm() - d.dot(e);
+  const double z0 = F.beta * den - F.delta * num, z1 = F.gamma * num - F.alpha * den;
+  const double m = std::max(std::abs(z0), std::abs(z1));
+  if (!(m > 0) || !std::isfinite(m)) return false;
+  zeta = {z0 / m, z1 / m};
+  return true;
 }
 }  // namespace
 
+Status cyclide_blend_circle(const CyclideBlend& B, int piece, int family, double s,
+                            BlendCircle& out) {
+  if (piece < 0 || piece >= B.pieces || (family != 0 && family != 1))
+    return Status::invalid_argument;
+  if (!std::isfinite(s)) return Status::not_finite;
+  const DupinView V = patch_view(B, piece);
+  CircleFrame<double> F;
+  if (family == 0) {
+    if (!(s >= 0 && s <= 1)) return Status::invalid_argument;
+    if (Status st = dupin_frame(V, s, F); st != Status::ok) return st;
+    BlendCircle C;
+    C.center = F.o;
+    C.normal = canonical_normal(F.a);
+    C.radius = (F.p - F.o).norm();
+    out = C;
+    return Status::ok;
+  }
+  // The point X of the first glued circle at angle s, its zeta, and the
+  // second family's circle through c(0, zeta), c(1, zeta), c(inf, zeta).
+  if (Status st = dupin_frame(V, 0.0, F); st != Status::ok) return st;
+  const Vec3d n = canonical_normal(F.a), u = n.unitOrthogonal(), w = n.cross(u);
+  const Vec3d X = F.o + (F.p - F.o).norm() * (std::cos(s) * u + std::sin(s) * w);
+  HomogeneousParameter zeta;
+  if (!zeta_of_point(F, X, zeta)) return Status::degenerate_circle_parameter;
+  const HomogeneousParameter xi[3] = {{0, 1}, {1, 1}, {1, 0}};
+  DupinPoint P[3];
+  for (int j = 0; j < 3; ++j)
+    if (Status st = dupin_eval_homogeneous(B.piece[piece].cyclide, xi[j], zeta, 0.0, P[j]);
+        st != Status::ok)
+      return st;
+  BlendCircle C;
+  if (!circumcircle(P[0].point, P[1].point, P[2].point, C)) return Status::point_at_infinity;
+  out = C;
+  return Status::ok;
+}
+
 Status cyclide_blend_quality(const CyclideBlend& B, double& quality) {
+  if (B.pieces != 1 && B.pieces != 2) return Status::invalid_argument;
   double lo = HUGE_VAL, hi = 0;
   auto take = [&](double r) {
     lo = std::min(lo, r);
     hi = std::max(hi, r);
   };
+  const double two_pi = 8 * std::atan(1.0);
   for (int i = 0; i < B.pieces; ++i) {
-    Surface P;
-    if (Status st = cyclide_blend_surface(B, i, P); st != Status::ok) return st;
-    // The patch's circles of the first family (xi-circles) ...
+    // The patch's circles of the first family (whole circles) ...
     for (int k = 0; k <= 16; ++k) {
-      Vec3d c, n;
-      double r2;
-      if (Status st = P.circle(k / 16.0, c, n, r2); st != Status::ok) return st;
-      take(std::sqrt(r2));
+      BlendCircle C;
+      if (Status st = cyclide_blend_circle(B, i, 0, k / 16.0, C); st != Status::ok) return st;
+      take(C.radius);
     }
-    // ... and of the second (zeta-lines, through xi = 0, 1, infinity): a
-    // piece that turns sharply has small ones.
-    const DupinCyclide& D = B.piece[i].cyclide;
+    // ... and of the second: a piece that turns sharply has small ones.
     for (int k = 0; k < 16; ++k) {
-      const double z = std::tan(3.14159265358979324 * ((k + 0.5) / 16 - 0.5));
-      DupinPoint p[3];
-      const HomogeneousParameter xi[3] = {{0, 1}, {1, 1}, {1, 0}};
-      bool finite = true;
-      for (int j = 0; j < 3; ++j)
-        finite &= dupin_eval_homogeneous(D, xi[j], {z, 1}, 0.0, p[j]) == Status::ok;
-      take(finite ? circumradius(p[0].point, p[1].point, p[2].point) : HUGE_VAL);
+      BlendCircle C;
+      const bool ok = cyclide_blend_circle(B, i, 1, two_pi * (k + 0.5) / 16, C) == Status::ok;
+      take(ok ? C.radius : HUGE_VAL);
     }
   }
   quality = (hi > 0 && std::isfinite(hi)) ? lo / hi : 0.0;
   return Status::ok;
 }
+
+namespace {
+// The pieces build as circle-family surfaces (the scan of make_dupin_surface).
+bool pieces_build(const CyclideBlend& B) {
+  for (int i = 0; i < B.pieces; ++i) {
+    Surface P;
+    if (cyclide_blend_surface(B, i, P) != Status::ok) return false;
+  }
+  return true;
+}
+}  // namespace
 
 Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out, int samples,
                           double* quality) {
@@ -492,6 +571,8 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
     if (Status st = cyclide_blend(R, S, 1, 0.0, B); st != Status::ok) return st;
     double q = 0;
     if (Status st = cyclide_blend_quality(B, q); st != Status::ok) return st;
+    Surface P;
+    if (Status st = cyclide_blend_surface(B, 0, P); st != Status::ok) return st;
     if (quality) *quality = q;
     out = B;
     return Status::ok;
@@ -500,12 +581,14 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
   auto phi_of = [&](int k) { return -half_pi + 2 * half_pi * (k + 0.5) / samples; };
   // The quality at phi on a branch, or -1 where no valid blend exists.
   bool folded = false;
-  auto score = [&](int branch, double phi, CyclideBlend* keep) {
+  // A quality above `bar` counts only if the pieces build as surfaces.
+  auto score = [&](int branch, double phi, double bar, CyclideBlend* keep) {
     CyclideBlend B;
     const Status st = cyclide_blend(R, S, branch, std::tan(phi), B);
     folded |= st == Status::blend_folds;
     double q = -1;
     if (st != Status::ok || cyclide_blend_quality(B, q) != Status::ok) return -1.0;
+    if (q > bar && !pieces_build(B)) return -1.0;
     if (keep) *keep = B;
     return q;
   };
@@ -513,7 +596,7 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
   double best = -1;
   for (int branch : {1, -1})
     for (int k = 0; k < samples; ++k) {
-      const double q = score(branch, phi_of(k), nullptr);
+      const double q = score(branch, phi_of(k), best, nullptr);
       if (q > best) best = q, best_branch = branch, best_k = k;
     }
   if (best_k < 0) return folded ? Status::blend_folds : Status::singular_point;
@@ -521,17 +604,19 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
   double a = phi_of(std::max(best_k - 1, 0)), b = phi_of(std::min(best_k + 1, samples - 1));
   const double g = 0.5 * (std::sqrt(5.0) - 1);
   double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  double f1 = score(best_branch, x1, nullptr), f2 = score(best_branch, x2, nullptr);
+  // (The refinement's interior points are checked as surfaces only at the end.)
+  const double open = HUGE_VAL;
+  double f1 = score(best_branch, x1, open, nullptr), f2 = score(best_branch, x2, open, nullptr);
   for (int it = 0; it < 30; ++it) {
     if (f1 >= f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = score(best_branch, x1, nullptr);
+      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = score(best_branch, x1, open, nullptr);
     } else {
-      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = score(best_branch, x2, nullptr);
+      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = score(best_branch, x2, open, nullptr);
     }
   }
   CyclideBlend B;
-  double q = score(best_branch, f1 >= f2 ? x1 : x2, &B);
-  if (q < best) q = score(best_branch, phi_of(best_k), &B);  // never worse than the scan
+  double q = score(best_branch, f1 >= f2 ? x1 : x2, -1.0, &B);
+  if (q < best) q = score(best_branch, phi_of(best_k), -1.0, &B);  // never worse than the scan
   if (!(q >= 0)) return Status::internal_error;
   if (quality) *quality = q;
   out = B;

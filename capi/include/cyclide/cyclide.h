@@ -1124,6 +1124,8 @@ CYC_API int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
 #define CYC_PARAMETER_BUMP_DISPLACEMENT 1 /* w[index] of the directrix bump */
 #define CYC_PARAMETER_BUMP_POSITION 2     /* tau of the directrix bump */
 #define CYC_PARAMETER_CIRCLE_POINT 3      /* theta = 2 atan v[order] at end `index` */
+#define CYC_PARAMETER_FAMILY 4            /* phi = atan(alpha) of a double cyclide blend
+                                             on branch `index` (+1 or -1) */
 typedef struct cyc_free_parameter {
   int role;            /* CYC_PARAMETER_* */
   int index;           /* the end or the component */
@@ -1793,7 +1795,19 @@ CYC_API int cyc_cyclide_blend_build(cyc_context* ctx, const cyc_lie_cone* r, con
 CYC_API int cyc_cyclide_blend_auto(cyc_context* ctx, const cyc_lie_cone* r,
                                    const cyc_lie_cone* s, int samples, cyc_cyclide_blend* out,
                                    double* quality);
-/** The quality measure of a blend (validated like a cyc_dupin). */
+/** A circle of piece i's patch, defined geometrically: family 0, the
+ *  circle at u = s in [0, 1] (a whole circle; u = 0, 1 are the glued
+ *  circles); family 1, the second family's circle through the point of the
+ *  first glued circle at angle s (radians) from the direction
+ *  unitOrthogonal(normal) of that circle (Eigen's choice: the largest
+ *  components' perpendicular). normal is unit. CYC_E_POINT_AT_INFINITY for
+ *  a circle through infinity (a line). Allocation-free. */
+CYC_API int cyc_cyclide_blend_circle(cyc_context* ctx, const cyc_cyclide_blend* blend,
+                                     int piece, int family, double s, double center[3],
+                                     double normal[3], double* radius);
+/** The quality measure of a blend (validated like a cyc_dupin): min / max
+ *  radius of the family-0 circles at u = k/16 (k = 0..16) and the family-1
+ *  circles at the angles 2 pi (k + 1/2) / 16 (k = 0..15) of every piece. */
 CYC_API int cyc_cyclide_blend_quality(cyc_context* ctx, const cyc_cyclide_blend* blend,
                                       double* quality);
 /** Piece i's patch as a circle-family surface (CYC_SURFACE_DUPIN), u in
@@ -1816,6 +1830,84 @@ typedef struct cyc_cyclide_blend_report {
 CYC_API int cyc_cyclide_blend_continuity(cyc_context* ctx, const cyc_lie_cone* r,
                                          const cyc_lie_cone* s, const cyc_cyclide_blend* blend,
                                          int n, cyc_cyclide_blend_report* out);
+
+/* Optimizer tier (seed 003 §4, Case II): the double blend's family
+ * parameter phi = atan(alpha) chosen against a user objective (SPEC.md
+ * §8h.12). */
+
+/** The objective, a weighted sum (1/2 the sum of squared residuals) of
+ *  - fairness: the spread of the log radii of the patches' circles
+ *    (cyc_cyclide_blend_circle, `circles` of each family per piece):
+ *    sqrt(fairness / N) (log r_i - mean log r);
+ *  - the joint circle (the circle of the sphere joint) passing through
+ *    joint_points (distance / L) and having joint_radius (if > 0;
+ *    (radius - joint_radius) / L);
+ *  - obstacles: the hinge max(0, radius + clearance - distance from the
+ *    sphere's center to each family-0 circle) / L;
+ *  - regularity: per piece, the hinge max(0, 1 - e / (min_extent L)) on the
+ *    extent e = |c0 - c1| + |r0 - r1| + (r0 + r1)/2 |n0 x n1| of its glued
+ *    circles (near the asymptotes (45), (46) a piece collapses onto its
+ *    cone's circle and loses accuracy; fairness alone can prefer that).
+ *  L = the distance of the cones' circle centers plus both radii. */
+typedef struct cyc_cyclide_blend_objective {
+  double fairness;             /* >= 0, default 1 */
+  const double* joint_points;  /* 3 * joint_point_count doubles */
+  int joint_point_count;
+  double joint_point_weight;   /* >= 0, default 1 */
+  double joint_radius;         /* > 0: the wanted joint radius; 0 (default): none */
+  double joint_radius_weight;  /* >= 0, default 1 */
+  const cyc_blend_obstacle* obstacles;
+  int obstacle_count;
+  double clearance;            /* >= 0, default 0 */
+  double obstacle_weight;      /* >= 0, default 1 */
+  double regularity;           /* >= 0, default 1 */
+  double min_extent;           /* >= 0 (0: off), default 0.05 */
+  int circles;                 /* per family and piece, 4..256, default 16 */
+} cyc_cyclide_blend_objective;
+
+/** The scan and solver options. */
+typedef struct cyc_cyclide_blend_options {
+  int samples;                /* phi samples per branch, 8..4096, default 64 */
+  int branch;                 /* 0 (default): both hyperbolas; +1 or -1: one */
+  int max_iterations;         /* >= 0 (0: the best sample), default 50 */
+  double function_tolerance;  /* Ceres', default 1e-10 */
+  double gradient_tolerance;  /* default 1e-12 */
+  double parameter_tolerance; /* default 1e-10 */
+} cyc_cyclide_blend_options;
+
+/** The defaults above (usable without the optimizer tier). NULL is ignored. */
+CYC_API void cyc_cyclide_blend_objective_init(cyc_cyclide_blend_objective* objective);
+CYC_API void cyc_cyclide_blend_options_init(cyc_cyclide_blend_options* options);
+
+/** The blend of the cones r and s with its family parameter chosen: the
+ *  objective is scanned at `samples` phi per branch (valid blends only:
+ *  built, not folded or pinched, and buildable as surfaces) and Ceres
+ *  refines the best sample (central differences of the exact construction)
+ *  inside the run of valid samples around it; final_cost <= initial_cost
+ *  (the best sample) always. A single cyclide (dim(R + S) = 3) has nothing
+ *  to choose: it is returned with its cost. summary (may be NULL):
+ *  fairness, targets (the joint terms), obstacles and regularity are the
+ *  final cost's terms. Statuses: CYC_E_INVALID_ARGUMENT (weights, counts, circles,
+ *  samples, branch, max_iterations), CYC_E_NOT_FINITE, CYC_E_NULL_ARGUMENT,
+ *  those of cyc_cyclide_blend_dimension, CYC_E_BLEND_FOLDS or
+ *  CYC_E_SINGULAR_POINT when no sample is valid. objective / options NULL:
+ *  the defaults. Optimizer tier: allocates; CYC_E_UNSUPPORTED without
+ *  Ceres. Nothing is written on error. */
+CYC_API int cyc_optimize_cyclide_blend(cyc_context* ctx, const cyc_lie_cone* r,
+                                       const cyc_lie_cone* s,
+                                       const cyc_cyclide_blend_objective* objective,
+                                       const cyc_cyclide_blend_options* options,
+                                       cyc_cyclide_blend* out, cyc_optimize_summary* summary);
+
+/** The free parameter of cyc_optimize_cyclide_blend (after its scan; role
+ *  CYC_PARAMETER_FAMILY, index = the branch, the box of phi and the start),
+ *  as cyc_optimize_blend_parameters; *count = 0 for a single cyclide. */
+CYC_API int cyc_optimize_cyclide_blend_parameters(cyc_context* ctx, const cyc_lie_cone* r,
+                                                  const cyc_lie_cone* s,
+                                                  const cyc_cyclide_blend_objective* objective,
+                                                  const cyc_cyclide_blend_options* options,
+                                                  cyc_free_parameter* params, int capacity,
+                                                  int* count);
 
 #ifdef __cplusplus
 }
