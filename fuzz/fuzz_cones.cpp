@@ -85,14 +85,16 @@ void check_blend(const cyc_cyclide_blend& B) {
   FZ_CHECK(B.pieces == 1 || B.pieces == 2, "pieces = %d", B.pieces);
   FZ_CHECK(std::isfinite(B.alpha) && std::isfinite(B.beta) && finite(B.joint, 6),
            "non-finite blend data");
-  for (int i = 0; i < B.pieces; ++i) FZ_CHECK(finite(B.piece[i].theta, 36), "theta");
+  for (int i = 0; i < B.pieces; ++i)
+    FZ_CHECK(finite(B.piece[i].theta, 36) && finite(B.piece[i].origin, 3), "theta or origin");
 }
 
 void use_blend(State& st, const cyc_lie_cone& R, const cyc_lie_cone& S, bool tame,  // NOLINT
                cyc_cyclide_blend& B) {
   Input& in = st.in;
   if (in.rarely()) {  // corrupt it (a valid-looking corruption voids the G1 oracle)
-    B.piece[in.range(0, 1)].theta[in.range(0, 35)] += in.wild();
+    if (in.flag()) B.piece[in.range(0, 1)].theta[in.range(0, 35)] += in.wild();
+    else B.piece[in.range(0, 1)].origin[in.range(0, 2)] = in.wild();
     if (in.flag()) B.pieces = in.range(-1, 3);
     tame = false;
   }

@@ -586,15 +586,16 @@ void judge_point(const cyc_dupin& D, double xi, double zeta, const cyc_dupin_poi
   if (!(na > 0) || !(nb > 0)) return;
   const double kappa =
       double((long double)th * th * (1 + x * x) * (1 + z * z) / (na * nb));
-  const double np = fz::norm3(P.point);
+  // theta acts on local coordinates: the point minus the cyclide's origin.
+  const double q[3] = {P.point[0] - D.origin[0], P.point[1] - D.origin[1],
+                       P.point[2] - D.origin[2]};
+  const double np = fz::norm3(q);
   if (!(kappa <= 1e6) || !(np <= 1e6)) return;
-  const long double p2 = (long double)P.point[0] * P.point[0] +
-                         (long double)P.point[1] * P.point[1] +
-                         (long double)P.point[2] * P.point[2];
-  const long double xp[6] = {2.0L * P.point[0], 2.0L * P.point[1], 2.0L * P.point[2], p2 - 1,
-                             p2 + 1, 0};
+  const long double p2 =
+      (long double)q[0] * q[0] + (long double)q[1] * q[1] + (long double)q[2] * q[2];
+  const long double xp[6] = {2.0L * q[0], 2.0L * q[1], 2.0L * q[2], p2 - 1, p2 + 1, 0};
   const long double res = std::abs(ldot(xp, a)) / (lnorm(xp) * na);
-  const double tol = (1e-9 * far(P.point) + 1e3 * theta_defect(D)) * kappa;
+  const double tol = (1e-9 * far(q) + 1e3 * theta_defect(D)) * kappa;
   FZ_CHECK(res <= tol, "point off a(xi): contact residual %Lg > %g (kappa %g)", res, tol, kappa);
 }
 
@@ -711,8 +712,9 @@ bool operand(State& st, cyc_dupin& D, bool& valid, bool& moderate) {
       break;
     }
     case 2: {  // corrupted
-      const int k = in.range(0, 36);
+      const int k = in.range(0, 37);
       if (k == 36) D.type = in.range(-1, 5);
+      else if (k == 37) D.origin[in.range(0, 2)] = in.wild();  // NaN/Inf: CYC_E_NOT_FINITE
       else D.theta[k] = in.flag() ? in.wild() : D.theta[k] + param(in);
       valid = false;
       break;

@@ -432,7 +432,11 @@ TEST_F(LieCapi, TorusFromSpheres) {
   for (int i = 0; i < 3; ++i) ASSERT_EQ(cyc_lie_vector(ctx, &torus_spheres[i], a + 6 * i), CYC_OK);
   cyc_dupin V, S;
   ASSERT_EQ(cyc_dupin_from_vectors(ctx, a, &V), CYC_OK);
-  EXPECT_EQ(std::memcmp(&V, &D, sizeof V), 0);
+  // The vectors are decoded to spheres first (SPEC §8h.3): the same
+  // cyclide to rounding, no longer bit for bit.
+  EXPECT_EQ(V.type, D.type);
+  for (int k = 0; k < 36; ++k) EXPECT_NEAR(V.theta[k], D.theta[k], 1e-14) << k;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(V.origin[k], D.origin[k], 1e-15) << k;
   int ssig[3];
   ASSERT_EQ(cyc_dupin_from_subspace(ctx, a, 3, &S, ssig), CYC_OK) << cyc_context_last_error(ctx);
   EXPECT_EQ(ssig[0] * 100 + ssig[1] * 10 + ssig[2], 201);
@@ -543,6 +547,85 @@ TEST_F(LieCapi, CorruptedCyclidesAreRejected) {
     EXPECT_EQ(h, nullptr);
   }
   EXPECT_TRUE(contains(cyc_context_last_error(ctx), "type"));
+}
+
+// The local origin (SPEC §8h.3, §8h.7): built far from 0 it is the spheres'
+// mean centre, the same bits as the core; a returned cyc_dupin round-trips
+// through every function taking it (offset and swap keep the origin), a
+// hand-set origin translates the cyclide, and NaN/Inf is CYC_E_NOT_FINITE.
+TEST_F(LieCapi, OriginRoundTripsAndIsValidated) {
+  const double t[3] = {6e3, -4.8e3, 6.4e3};  // |t| = 1e4
+  cyc_lie_sphere far[3];
+  for (int i = 0; i < 3; ++i) {
+    far[i] = torus_spheres[i];
+    for (int k = 0; k < 3; ++k) far[i].m[k] += t[k];
+  }
+  cyc_dupin D;
+  ASSERT_EQ(cyc_dupin_from_spheres(ctx, far, &D), CYC_OK) << cyc_context_last_error(ctx);
+  LieSphere s[3];
+  for (int i = 0; i < 3; ++i)
+    s[i] = cyclide::oriented_sphere(Vec3d(far[i].m[0], far[i].m[1], far[i].m[2]), far[i].rho);
+  DupinCyclide C;
+  ASSERT_EQ(cyclide::dupin_from_spheres(s, C), Status::ok);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(D.origin[k], C.origin[k]);
+    EXPECT_NEAR(D.origin[k], t[k] + (k == 1 ? 1.0 : 0.0), 1e-11);
+  }
+  cyc_dupin O, W, back;
+  ASSERT_EQ(cyc_dupin_offset(ctx, &D, 0.25, &O), CYC_OK);
+  ASSERT_EQ(cyc_dupin_swap_families(ctx, &D, &W), CYC_OK);
+  ASSERT_EQ(cyc_dupin_swap_families(ctx, &W, &back), CYC_OK);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(O.origin[k], D.origin[k]);
+    EXPECT_EQ(W.origin[k], D.origin[k]);
+  }
+  EXPECT_EQ(std::memcmp(&back, &D, sizeof D), 0);  // padding zeroed too
+  for (double xi : kXis)
+    for (double zeta : kZetas) {
+      cyc_dupin_point P;
+      ASSERT_EQ(cyc_dupin_eval(ctx, &D, xi, zeta, 0.0, &P), CYC_OK);
+      DupinPoint Q;
+      ASSERT_EQ(cyclide::dupin_eval(C, xi, zeta, 0.0, Q), Status::ok);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(P.point[k], Q.point[k]);
+      const double local[3] = {P.point[0] - t[0], P.point[1] - t[1], P.point[2] - t[2]};
+      EXPECT_LE(torus_residual(local, 3, 1), 1e-12 * (1 + 1e4)) << xi << " " << zeta;
+      EXPECT_NEAR(dot3(P.point, P.normal), P.lambda, 1e-12 * (1 + 1e4));
+    }
+  // A hand-set origin moves theta's cyclide by exactly that much.
+  const cyc_dupin D0 = torus();
+  cyc_dupin D1 = D0;
+  const double shift[3] = {5, -7, 11};
+  for (int k = 0; k < 3; ++k) D1.origin[k] = D0.origin[k] + shift[k];
+  cyc_dupin_point P0, P1;
+  ASSERT_EQ(cyc_dupin_eval(ctx, &D0, 0.3, -0.7, 0.5, &P0), CYC_OK);
+  ASSERT_EQ(cyc_dupin_eval(ctx, &D1, 0.3, -0.7, 0.5, &P1), CYC_OK);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(P1.point[k] - P0.point[k], shift[k], 1e-13);
+  EXPECT_NEAR(P1.lambda - P0.lambda, dot3(P0.normal, shift), 1e-13);
+  // Non-finite origins.
+  for (double bad : {kNaN, HUGE_VAL, -HUGE_VAL}) {
+    cyc_dupin B = D0;
+    B.origin[1] = bad;
+    cyc_dupin_point P;
+    cyc_dupin out;
+    cyc_lie_sphere ls;
+    cyc_surface* h = nullptr;
+    poison(P);
+    poison(out);
+    poison(ls);
+    const double tt[2] = {0, 1};
+    expect_fail(cyc_dupin_eval(ctx, &B, 0.1, 0.2, 0.0, &P), CYC_E_NOT_FINITE, "cyc_dupin_eval");
+    EXPECT_TRUE(contains(cyc_context_last_error(ctx), "origin"));
+    expect_fail(cyc_dupin_sphere(ctx, &B, 0, tt, &ls), CYC_E_NOT_FINITE, "cyc_dupin_sphere");
+    expect_fail(cyc_dupin_offset(ctx, &B, 0.5, &out), CYC_E_NOT_FINITE, "cyc_dupin_offset");
+    expect_fail(cyc_dupin_swap_families(ctx, &B, &out), CYC_E_NOT_FINITE,
+                "cyc_dupin_swap_families");
+    expect_fail(cyc_dupin_surface_create(ctx, &B, nullptr, nullptr, -1, 1, &h), CYC_E_NOT_FINITE,
+                "cyc_dupin_surface_create");
+    EXPECT_TRUE(poisoned(P));
+    EXPECT_TRUE(poisoned(out));
+    EXPECT_TRUE(poisoned(ls));
+    EXPECT_EQ(h, nullptr);
+  }
 }
 
 // A cylinder (class I) has a point at infinity on every zeta-circle of one

@@ -134,6 +134,42 @@ TEST(Seed003Algorithm2, SingleCyclideElbowIsATorus) {
   EXPECT_NEAR(q, 0.25, 0.01);
 }
 
+// The same elbow moved by t = 1e4 (0.6, -0.48, 0.64): Algorithm 2 runs in
+// the frame centred between the two circles (SPEC §8h.3), so the piece is
+// still the quarter torus, to 1e-12 (1 + |t|) = 1e-8 absolute (measured
+// ~1e-12), its origin is the circles' midpoint and its glued spheres are
+// the cones' r0 (global vectors).
+TEST(Seed003Algorithm2, SingleElbowFarFromTheOriginIsATorus) {
+  const Vec3d t = 1e4 * Vec3d(0.6, -0.48, 0.64);
+  const LieCone R = cone(t, {0, 0, 1}, 1, 0, 1);
+  const LieCone S = cone(Vec3d(3, 0, 3) + t, {-1, 0, 0}, 1, 0, 1);
+  CyclideBlend B;
+  ASSERT_EQ(cyclide_blend(R, S, 1, 0.0, B), Status::ok);
+  ASSERT_EQ(B.pieces, 1);
+  EXPECT_NEAR((B.piece[0].cyclide.origin - (t + Vec3d(1.5, 0, 1.5))).norm(), 0.0, 1e-11);
+  const double tol = 1e-12 * (1 + t.norm());
+  LieSphere first, second;
+  ASSERT_EQ(lie_sphere(B.piece[0].first, first), Status::ok);
+  ASSERT_EQ(lie_sphere(B.piece[0].second, second), Status::ok);
+  EXPECT_NEAR((first.m - t).norm(), 0.0, tol);
+  EXPECT_NEAR((second.m - (Vec3d(3, 0, 3) + t)).norm(), 0.0, tol);
+  Surface P;
+  ASSERT_EQ(cyclide_blend_surface(B, 0, P), Status::ok);
+  for (double u : {0.0, 0.2, 0.5, 0.8, 1.0})
+    for (double v : {-3.0, -0.5, 0.0, 1.0, 7.0}) {
+      const Vec3d x = point(P, u, v) - t;
+      const double r = std::hypot(std::hypot(x[0] - 3, x[2]) - 3, x[1]) - 1;
+      EXPECT_NEAR(r, 0.0, tol) << u << " " << v;
+      EXPECT_LE(x[0] - 3, tol);
+      EXPECT_GE(x[2], -tol);
+    }
+  expect_g1(R, S, B, 1e-11);
+  double q = 0;
+  CyclideBlend C;
+  ASSERT_EQ(cyclide_blend_auto(R, S, C, 64, &q), Status::ok);
+  EXPECT_NEAR(q, 0.25, 0.01);
+}
+
 // Case II, both hyperbolas of (43): on each branch T(alpha, beta) =
 // R^{1,1,0} (Lemma 4.7 / (42)), t0 (44) is neutral, orthogonal to T and
 // touches neither r0 nor s0 ((34), (35)); A = R + T and B = S + T are

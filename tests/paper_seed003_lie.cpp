@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "cyclide/dupin.hpp"
 #include "cyclide/lie.hpp"
@@ -32,6 +33,16 @@ DupinCyclide torus(double R, double r) {
                           oriented_sphere({-R, 0, 0}, r)};
   DupinCyclide D;
   EXPECT_EQ(dupin_from_spheres(s, D), Status::ok);
+  return D;
+}
+
+// The same torus stored with origin 0 (dupin_from_local_vectors): theta's
+// own coordinates are the global ones, for tests of theta's algebra.
+DupinCyclide torus_at_zero(double R, double r) {
+  const Lie6d a[3] = {vec(oriented_sphere({R, 0, 0}, r)), vec(oriented_sphere({0, R, 0}, r)),
+                      vec(oriented_sphere({-R, 0, 0}, r))};
+  DupinCyclide D;
+  EXPECT_EQ(dupin_from_local_vectors(a, D), Status::ok);
   return D;
 }
 
@@ -297,7 +308,7 @@ TEST(Seed003Algorithm1, TorusFromThreeSpheres) {
 // ERRATA, Algorithm 1 line 6: with "+2 c^/(c^ . n_inf)" the point comes out
 // reflected through the origin, off the surface.
 TEST(Seed003Algorithm1, PrintedSignReflectsThroughTheOrigin) {
-  const DupinCyclide D = torus(3, 1);
+  const DupinCyclide D = torus_at_zero(3, 1);
   const Lie6d a = D.sphere_xi(0.4, 1.0), b = D.sphere_zeta(0.7, 1.0);
   // Line 5 as printed lost its minus: (er.a) a_perp + (er.a_perp) a.
   const Lie6d printed5 = dot_e_r(a) * b + dot_e_r(b) * a;
@@ -309,6 +320,115 @@ TEST(Seed003Algorithm1, PrintedSignReflectsThroughTheOrigin) {
   EXPECT_LE(torus_residual(good, 3, 1), 1e-13);
   EXPECT_NEAR((printed6 + good).norm(), 0.0, 1e-14);
   EXPECT_GT(torus_residual(printed6 + Vec3d(1, 0, 0), 3, 1), 1e-3);
+}
+
+// The local origin (SPEC §8h.3): the torus of TorusFromThreeSpheres moved
+// by D = 1e2 .. 1e5. Stored globally it lost about eps D^4 (9e-10 at D =
+// 100, not_isometric from D ~ 430); with the origin at the spheres' mean
+// centre every point lies on its two touching spheres and on the moved
+// torus to 1e-12 (1 + D), through dupin_from_spheres and through the
+// global vectors (dupin_from_vectors decodes them with the robust weight).
+TEST(Seed003Algorithm1, TranslatedTorusKeepsItsAccuracy) {
+  const Vec3d dir = Vec3d(0.6, -0.48, 0.64);  // |dir| = 1
+  for (double dist : {1e2, 1e3, 1e4, 1e5}) {
+    const Vec3d t = dist * dir;
+    const LieSphere s[3] = {oriented_sphere(Vec3d(3, 0, 0) + t, 1),
+                            oriented_sphere(Vec3d(0, 3, 0) + t, 1),
+                            oriented_sphere(Vec3d(-3, 0, 0) + t, 1)};
+    const Lie6d a[3] = {vec(s[0]), vec(s[1]), vec(s[2])};
+    DupinCyclide built[2];
+    ASSERT_EQ(dupin_from_spheres(s, built[0]), Status::ok) << dist;
+    ASSERT_EQ(dupin_from_vectors(a, built[1]), Status::ok) << dist;
+    const double tol = 1e-12 * (1 + dist);
+    for (const DupinCyclide& D : built) {
+      EXPECT_EQ(D.type, DupinLaguerreType::quartic);
+      EXPECT_NEAR((D.origin - (t + Vec3d(0, 1, 0))).norm(), 0.0, tol);
+      for (double xi : {-2.0, -0.5, 0.0, 0.3, 1.0, 4.0})
+        for (double zeta : {-3.0, -1.0, 0.0, 0.2, 2.0}) {
+          DupinPoint P;
+          ASSERT_EQ(dupin_eval(D, xi, zeta, 0.0, P), Status::ok);
+          EXPECT_LE(torus_residual(P.point - t, 3, 1), tol) << dist;
+          EXPECT_NEAR(P.normal.norm(), 1.0, 1e-13);
+          EXPECT_NEAR(P.point.dot(P.normal), P.lambda, tol);
+          LieSphere sa, sb;
+          ASSERT_EQ(dupin_sphere_xi(D, {xi, 1}, sa), Status::ok);
+          ASSERT_EQ(dupin_sphere_zeta(D, {zeta, 1}, sb), Status::ok);
+          EXPECT_NEAR((P.point - sa.rho * P.normal - sa.m).norm(), 0.0, tol) << dist;
+          if (sb.kind == LieSphereKind::sphere) {
+            EXPECT_NEAR((P.point - sb.rho * P.normal - sb.m).norm(), 0.0,
+                        10 * tol * (1 + std::abs(sb.rho)))
+                << dist;
+          } else if (sb.kind == LieSphereKind::plane) {
+            EXPECT_NEAR(P.point.dot(sb.n), sb.lambda, tol) << dist;
+          }
+        }
+      // The inputs come back as a(0), a(inf), a(1), centred globally.
+      const HomogeneousParameter anchors[3] = {{0, 1}, {1, 0}, {1, 1}};
+      for (int i = 0; i < 3; ++i) {
+        LieSphere b;
+        ASSERT_EQ(dupin_sphere_xi(D, anchors[i], b), Status::ok);
+        EXPECT_NEAR((b.m - s[i].m).norm(), 0.0, tol) << dist;
+        EXPECT_NEAR(b.rho, 1.0, 1e-12);
+      }
+      // The view and Surface::sphere are global too.
+      DupinView V;
+      V.cyclide = D;
+      Surface S;
+      ASSERT_EQ(make_dupin_surface(V, -2, 2, S), Status::ok);
+      for (double u : {-1.0, 0.5}) {
+        Vec3d center;
+        double r2;
+        ASSERT_EQ(S.sphere(u, center, r2), Status::ok);
+        for (double v : {-2.0, 0.0, 1.5}) {
+          double x[3];
+          ASSERT_EQ(S.eval(u, v, EvalOut{x, nullptr, nullptr, nullptr}), Status::ok);
+          const Vec3d X(x[0], x[1], x[2]);
+          EXPECT_LE(torus_residual(X - t, 3, 1), tol) << dist;
+          EXPECT_NEAR((X - center).norm(), 1.0, tol) << dist;
+        }
+      }
+    }
+  }
+}
+
+// A hand-set origin is a plain translation of theta's cyclide, also for
+// offsets and swapped families (which keep it).
+TEST(Seed003Algorithm1, OriginTranslatesTheCyclide) {
+  const DupinCyclide D0 = torus_at_zero(3, 1);
+  DupinCyclide D = D0;
+  D.origin = Vec3d(5, -7, 11);
+  for (const auto& pair : {std::make_pair(D0, D), std::make_pair(dupin_offset(D0, 0.5),
+                                                                 dupin_offset(D, 0.5)),
+                           std::make_pair(swap_families(D0), swap_families(D))}) {
+    for (double xi : {-1.0, 0.5})
+      for (double zeta : {0.0, 2.0}) {
+        DupinPoint P, Q;
+        ASSERT_EQ(dupin_eval(pair.first, xi, zeta, 0.25, P), Status::ok);
+        ASSERT_EQ(dupin_eval(pair.second, xi, zeta, 0.25, Q), Status::ok);
+        EXPECT_NEAR((Q.point - P.point - D.origin).norm(), 0.0, 1e-13);
+        EXPECT_NEAR((Q.normal - P.normal).norm(), 0.0, 1e-15);
+        EXPECT_NEAR((Q.d_xi - P.d_xi).norm(), 0.0, 1e-15);
+        EXPECT_NEAR(Q.lambda, P.lambda + P.normal.dot(D.origin), 1e-13);
+      }
+    EXPECT_EQ(pair.second.origin, D.origin);
+  }
+  EXPECT_EQ(dupin_laguerre_type(D), dupin_laguerre_type(D0));
+}
+
+// The robust weight (lie_sphere_weight): x . n_inf of (4) is -2 to a few
+// eps also where x_+ - x_- cancels (|m| = 1e6), and lie_sphere reads the
+// centre back to relative eps (it lost eps |m|^3 through x_+ - x_-).
+TEST(Seed003Algorithm1, RobustSphereWeight) {
+  for (double dist : {0.0, 1.0, 1e3, 1e6}) {
+    const Lie6d x = vec(oriented_sphere(Vec3d(0.6, 0.8, 0) * dist + Vec3d(0.1, 0.2, 0.3), 0.7));
+    EXPECT_NEAR(lie_sphere_weight(x), -2.0, 8e-16 * 2) << dist;
+    EXPECT_NEAR(lie_sphere_weight(-3.0 * x), 6.0, 8e-16 * 6) << dist;
+    LieSphere s;
+    ASSERT_EQ(lie_sphere(-3.0 * x, s), Status::ok);
+    const Vec3d m = Vec3d(0.6, 0.8, 0) * dist + Vec3d(0.1, 0.2, 0.3);
+    EXPECT_NEAR((s.m - m).norm(), 0.0, 4e-16 * (1 + m.norm())) << dist;
+    EXPECT_NEAR(s.rho, 0.7, 4e-16 * (1 + m.norm())) << dist;
+  }
 }
 
 // Homogeneous parameters reach the spheres at xi = infinity (the second

@@ -211,9 +211,14 @@ Outcome dupin_in(const char* fn, const cyc_dupin* c, DupinCyclide& D) {
                 "%s: cyclide->type = %d is not CYC_DUPIN_DEGENERATE (1), CYC_DUPIN_PARABOLIC "
                 "(2) or CYC_DUPIN_QUARTIC (3)",
                 fn, c->type);
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(c->origin[i]))
+      return fail(CYC_E_NOT_FINITE, "%s: cyclide->origin[%d] = %.17g is not finite", fn, i,
+                  c->origin[i]);
   DupinCyclide E;
   E.theta = theta;
   E.type = dupin_laguerre_type(E);
+  E.origin = vec(c->origin);
   if (int(E.type) != c->type)
     return fail(CYC_E_INVALID_ARGUMENT, "%s: cyclide->type = %d, but theta's Laguerre class is %d",
                 fn, c->type, int(E.type));
@@ -226,9 +231,13 @@ Outcome dupin_out(const char* fn, const DupinCyclide& D, cyc_dupin* out) {
   char why[256];
   if (check_theta(D.theta, why, sizeof why) != CYC_OK)
     return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result is ill-conditioned: %s", fn, why);
+  if (!D.origin.allFinite())
+    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result's origin is not finite", fn);
   cyc_dupin c;
+  std::memset(&c, 0, sizeof c);  // no stray padding bytes
   to_row_major(D.theta, c.theta);
   c.type = int(dupin_laguerre_type(D));
+  put3(c.origin, D.origin);
   *out = c;
   return ok();
 }
@@ -579,9 +588,14 @@ int cyc_dupin_from_spheres(cyc_context* ctx, const cyc_lie_sphere spheres[3], cy
     REQUIRE(spheres);
     REQUIRE(out);
     Lie6d a[3];
-    if (Outcome r = triple_in(fn, spheres, a); r.status) return r;
+    if (Outcome r = triple_in(fn, spheres, a); r.status) return r;  // validation
+    // The spheres themselves, so that the core moves them to its local
+    // origin before forming (4) (SPEC §8h.3).
+    LieSphere L[3];
+    for (int i = 0; i < 3; ++i)
+      if (Outcome r = sphere_in(fn, "spheres[i]", spheres[i], L[i]); r.status) return r;
     DupinCyclide D;
-    if (Status s = dupin_from_vectors(a, D); s != Status::ok) return triple_failure(fn, s);
+    if (Status s = dupin_from_spheres(L, D); s != Status::ok) return triple_failure(fn, s);
     return dupin_out(fn, D, out);
   });
 }

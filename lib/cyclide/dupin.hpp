@@ -16,6 +16,16 @@
 //   n  =  n^_123 / (n^ . er),   lambda = n^_+ / (n^ . er),
 // and the tangent plane at c is x . n = lambda; a touching sphere (m, rho)
 // of either family has c - rho n = m.
+//
+// Local origin (SPEC §8h.3). A sphere (m, rho) has n_inf-type coordinates
+// |m|^2 - rho^2 +- 1 in (4), so Lie vectors of spheres at distance D from
+// the origin carry the scale that decodes them, (6), with an absolute error
+// eps D^2: a cyclide built and stored in global coordinates loses about
+// eps D^4 (a torus moved by 100: 9e-10; from D ~ 430 the Witt step failed
+// with not_isometric). theta is therefore stored in local coordinates
+// x - origin: the cyclide is theta's cyclide translated by +origin. The
+// builders pick the origin at the inputs' centre, and every function below
+// that returns points, planes or Lie spheres returns them globally.
 #pragma once
 
 #include "cyclide/circle_family.hpp"
@@ -46,13 +56,16 @@ struct DupinCyclide {
   // theta(er); A = span of columns 0, 1, 4; A^perp of 2, 3, 5.
   Matrix6d theta = Matrix6d::Identity();
   DupinLaguerreType type = DupinLaguerreType::quartic;
+  // The cyclide is theta's cyclide translated by +origin (theta, and the
+  // vectors sphere_xi / sphere_zeta below, are in local coordinates).
+  Vec3d origin = Vec3d::Zero();
 
-  // (29): the sphere a(xi) of the first family.
+  // (29): the sphere a(xi) of the first family, in local coordinates.
   template <class S>
   Lie6<S> sphere_xi(const S& x0, const S& x1) const {
     return family(kE1, kE2, kEMinus, x0, x1);
   }
-  // (30) corrected: the sphere a_perp(zeta) of the second family.
+  // (30) corrected: the sphere a_perp(zeta) of the second family (local).
   template <class S>
   Lie6<S> sphere_zeta(const S& z0, const S& z1) const {
     return family(kE3, kEPlus, kER, z0, z1);
@@ -110,18 +123,41 @@ Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature = n
 // Statuses of classify_sphere_triple, degenerate_cyclide (every sphere of a
 // family is a point: A or A^perp in B (5)), not_isometric / numerical_overflow
 // from the extension. `out` is written only on success.
+//
+// Origins. dupin_from_spheres translates the inputs by -origin at the
+// geometric level (centres and points minus origin, a plane's lambda minus
+// n . origin) before forming (4)/(7), origin = the mean of the finite
+// centres and points (0 if all inputs are planes or the point at infinity):
+// the build is as accurate as one near the origin (|error| ~ eps (1 + D)).
+// dupin_from_vectors decodes its vectors to Lie spheres first (lie_sphere,
+// whose weight x . n_inf is read robustly by lie_sphere_weight), so that a
+// sphere's centre and radius come back with relative error ~eps, not eps D^2,
+// and then proceeds as dupin_from_spheres; so vectors made by (4) from
+// global spheres give the same accuracy as the spheres themselves.
 Status dupin_from_spheres(const LieSphere (&s)[3], DupinCyclide& out);
 Status dupin_from_vectors(const Lie6d (&a)[3], DupinCyclide& out);
+// Algorithm 1 on vectors already in the frame theta is to be stored in:
+// origin = 0, no decoding (Algorithm 2 builds its pieces in one local frame
+// and sets their origin afterwards). Statuses as dupin_from_vectors.
+Status dupin_from_local_vectors(const Lie6d (&a)[3], DupinCyclide& out);
+
 
 // A cyclide from any spanning set of a PE-subspace A (k >= 3 vectors, rank
 // 3, signature (2, 0, 1); e.g. R + S of two cones, §4): theta from an
 // orthonormal basis of A and of A^perp. not_isometric if the span is not a
-// PE-subspace (with its signature in *sig, may be null).
+// PE-subspace (with its signature in *sig, may be null). origin = the mean
+// of the centres of the spanning vectors that are spheres or points (read
+// by lie_sphere); all vectors are moved there by the Lie translation by
+// -origin. That keeps their rounding (the n_inf-type coordinates of a
+// vector at distance D carry eps D^2, which the translation cannot remove),
+// so far from the origin this builder is not more accurate than before;
+// it only stores theta at the inputs' centre (SPEC §8h.11).
 Status dupin_from_subspace(const Lie6d* span, int k, DupinCyclide& out,
                            Signature* sig = nullptr);
 
 // The same cyclide with the families exchanged (Cor. 3.6: A and A^perp
-// determine the same surface): theta composed with e1<->e3, e2<->e+, e-<->er.
+// determine the same surface): theta composed with e1<->e3, e2<->e+, e-<->er;
+// the origin is kept.
 DupinCyclide swap_families(const DupinCyclide& D);
 
 // Lemma 3.10 / Thm. 3.11 from theta (also stored in D.type at construction).
@@ -141,7 +177,8 @@ struct DupinPoint {
   Vec3d d_xi = Vec3d::Zero(), d_zeta = Vec3d::Zero();
 };
 
-// Affine parameters (both finite). point_at_infinity when c^ . n_inf
+// Global coordinates: point + origin, lambda + n . origin (normal and
+// partials are translation invariant). Affine parameters (both finite). point_at_infinity when c^ . n_inf
 // vanishes relative to |c^| (kDupinInfinityTol), not_finite for NaN/Inf
 // input, numerical_overflow if an output is not finite.
 constexpr double kDupinInfinityTol = 1e-13;
@@ -152,13 +189,14 @@ Status dupin_eval(const DupinCyclide& D, double xi, double zeta, double offset,
 Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
                               HomogeneousParameter zeta, double offset, DupinPoint& out);
 
-// The spheres of the two families as Lie spheres (a(xi) may be a plane or
-// a point).
+// The spheres of the two families as global Lie spheres (a(xi) may be a
+// plane or a point; centre + origin, plane lambda + n . origin).
 Status dupin_sphere_xi(const DupinCyclide& D, HomogeneousParameter xi, LieSphere& out);
 Status dupin_sphere_zeta(const DupinCyclide& D, HomogeneousParameter zeta, LieSphere& out);
 
 // The offset cyclide at distance d: theta composed with the Laguerre
-// dilatation rho -> rho + d (its points are c + d n).
+// dilatation rho -> rho + d (its points are c + d n); the origin is kept
+// (translations and dilatations commute).
 DupinCyclide dupin_offset(const DupinCyclide& D, double d);
 
 // ------------------------------------------- the circle-family view
@@ -205,7 +243,8 @@ Status dupin_frame(const DupinView& V, const S& u, CircleFrame<S>& F) {
       return Status::point_at_infinity;
     X[i] = euclidean_point(c);
   }
-  // Circumcenter o of X0, X1, X2 and the axis a = (X1 - X0) x (X2 - X0).
+  // Circumcenter o of X0, X1, X2 and the axis a = (X1 - X0) x (X2 - X0),
+  // in local coordinates (the origin is added to o and p at the end).
   const Vec3<S> e1 = X[1] - X[0], e2 = X[2] - X[0];
   const Vec3<S> axis = e1.cross(e2);
   const S aa = axis.dot(axis);
@@ -231,9 +270,10 @@ Status dupin_frame(const DupinView& V, const S& u, CircleFrame<S>& F) {
   // f(zeta) = alpha_f zeta + beta_f, zeta = (P v + Q) / (R v + T).
   const S alpha_f = f[1] - f[0], beta_f = f[0];
   const double* zm = V.zeta_map;
-  F.o = o;
+  const Vec3d& g = V.cyclide.origin;
+  F.o = o + Vec3<S>(S(g[0]), S(g[1]), S(g[2]));
   F.a = axis;
-  F.p = X[0];
+  F.p = X[0] + Vec3<S>(S(g[0]), S(g[1]), S(g[2]));
   F.alpha = alpha_f * S(zm[0]) + beta_f * S(zm[2]);
   F.beta = alpha_f * S(zm[1]) + beta_f * S(zm[3]);
   F.gamma = S(zm[2]);

@@ -153,9 +153,20 @@ LieSphere oriented_plane(const Vec3d& n, double lambda);
 // with n = 0) leave `out` unchanged.
 Status lie_vector(const LieSphere& s, Lie6d& out);
 
+// x . n_inf of a neutral vector x, read robustly: x_+ - x_- cancels for a
+// sphere far from the origin (after (4) its relative error is eps (|m|^2 +
+// rho^2 + 1) / 2, so (6) returns the centre with an error eps |m|^3), while
+// neutrality gives the same value as -(|x_123|^2 - x_r^2) / (x_+ + x_-),
+// whose relative error is eps (|m|^2 + rho^2) / ||m|^2 - rho^2|; the
+// better conditioned of the two is returned (any scale of x; x_+ - x_- for
+// zero or non-finite x).
+double lie_sphere_weight(const Lie6d& x);
+
 // The Lie sphere of a representative x of any scale: (6) when x . n_inf !=
-// 0, (9) when x . n_inf = 0 and x . er != 0, the point at infinity
-// otherwise. not_on_lie_quadric when |x . x| > kLieQuadricTol |x|^2.
+// 0 (with the weight lie_sphere_weight, so centres and radii come back to
+// relative eps also for spheres far from the origin), (9) when x . n_inf =
+// 0 and x . er != 0, the point at infinity otherwise. not_on_lie_quadric
+// when |x . x| > kLieQuadricTol |x|^2.
 constexpr double kLieQuadricTol = 1e-9;
 Status lie_sphere(const Lie6d& x, LieSphere& out);
 

@@ -22,18 +22,32 @@ Status normalize_cone(const LieCone& in, LieCone& out) {
   if (!(n0 > 0) || !(np > 0)) return Status::invalid_argument;
   if (!(std::abs(lie_dot(in.r0, in.r0)) <= kConeTol * n0 * n0))
     return Status::not_on_lie_quadric;
-  const double t = dot_n_infinity(in.r0);
   // A plane as generating sphere (a planar tangent cone, Remark 4.2) has no
   // circle centre to normalize by; not supported yet.
-  if (!(std::abs(t) > 1e-12 * n0)) return Status::unsupported;
+  if (!(std::abs(dot_n_infinity(in.r0)) > 1e-12 * n0)) return Status::unsupported;
+  // The scale through the robust weight: r0_+ - r0_- cancels for spheres
+  // far from the origin and would scale the read-back centre by 1 + eps D^2.
+  const double t = lie_sphere_weight(in.r0);
   LieCone C;
   C.r0 = (-2.0 / t) * in.r0;
-  C.r_plus = in.r_plus + (0.5 * dot_n_infinity(in.r_plus)) * C.r0;
+  // r+ . n_inf within the rounding of its terms is zero (cone_from_spheres
+  // makes it so): adding that noise times r0 would tilt dm by eps D^2.
+  const double tp = dot_n_infinity(in.r_plus);
+  const double tp_terms = std::abs(in.r_plus[kEPlus]) + std::abs(in.r_plus[kEMinus]);
+  if (std::abs(tp) > 64 * 2.220446049250313e-16 * tp_terms)
+    C.r_plus = in.r_plus + (0.5 * tp) * C.r0;
+  else
+    C.r_plus = in.r_plus;
   const double rp = C.r_plus.norm();
   if (!(std::abs(lie_dot(C.r_plus, C.r0)) <= kConeTol * rp * C.r0.norm()))
     return Status::invalid_argument;  // r+ not tangent to the Lie quadric at r0
-  if (!(lie_dot(C.r_plus, C.r_plus) > kConeTol * rp * rp))
-    return Status::invalid_argument;  // not a real cone: (11) fails
+  // Not a real cone: (11) fails. r+ . r+ = |dm|^2 - drho^2 (times 4) is
+  // measured against the e1..e3 and er part of r+: its n_inf part (x_+ =
+  // x_-, of size |m| |dm|) cancels in the form, and as a scale it rejected
+  // every cone farther than ~3e4 from the origin.
+  const double rp_euclidean = C.r_plus.head<3>().squaredNorm() + C.r_plus[kER] * C.r_plus[kER];
+  if (!(lie_dot(C.r_plus, C.r_plus) > kConeTol * rp_euclidean))
+    return Status::invalid_argument;
   if (!(std::abs(C.r0[kER]) > 1e-12 * C.r0.norm()))
     return Status::invalid_argument;  // a point sphere: the circle is a point
   out = C;
@@ -106,7 +120,9 @@ Status make_piece(const Lie6d& x0_in, const Lie6d& xp_in, const Lie6d& y0_in,
   const Lie6d z = x0 - (lie_dot(p, p) / (2.0 * g)) * y0 + nu * p;
   const Lie6d anchors[3] = {x0, y0, z};
   CyclideBlendPiece P;
-  if (Status st = dupin_from_vectors(anchors, P.cyclide); st != Status::ok) {
+  // In the blend's frame (origin 0 here; cyclide_blend sets it), so that
+  // theta, x0, xp and y0 share one frame for the side checks below.
+  if (Status st = dupin_from_local_vectors(anchors, P.cyclide); st != Status::ok) {
     // Near the asymptotes (45)/(46) t0 nearly touches x0 and the piece
     // collapses; its anchors then fail the PE test to rounding.
     const bool collapsed = st == Status::not_isometric || st == Status::single_touching_sphere ||
@@ -277,7 +293,7 @@ Status cone_from_surface(const Surface& S, double u, int direction, int orientat
       return Status::unsupported;  // the family's sphere is a plane here
     for (int i = 0; i < 3; ++i) {
       const Taylor<double, 1> x = -a[i] / w;  // (6): m = -a_123 / (a . n_inf)
-      m[i] = x.c[0];
+      m[i] = x.c[0] + S.dupin.cyclide.origin[i];  // global centre
       dm[i] = x.c[1];
     }
     const Taylor<double, 1> r = -a[kER] / w;
@@ -339,10 +355,33 @@ Status cone_surface(const LieCone& R, double h0, double h1, Surface& out) {
   return make_ringed(d, n, c, nullptr, h0, h1, out);
 }
 
-Status cyclide_blend_dimension(const LieCone& R0, const LieCone& S0, int& dim) {
-  LieCone R, S;
-  if (Status st = normalize_cone(R0, R); st != Status::ok) return st;
-  if (Status st = normalize_cone(S0, S); st != Status::ok) return st;
+namespace {
+// The blend's local frame (SPEC §8h.3): origin = the midpoint of the two
+// cones' circle centres, and both cones moved by -origin through their
+// sphere families (read back exactly from (4)'s e1..e3 and er
+// coordinates, moved, and rebuilt by cone_from_spheres). Translation is a
+// Laguerre and a Mobius map: it fixes n_inf and er, so every Lie product,
+// side and pinch test of Algorithm 2 means the same in this frame, while
+// the products no longer cancel terms of size |m|^2.
+Status common_frame(const LieCone& R0, const LieCone& S0, LieCone& R, LieCone& S,
+                    Vec3d& origin) {
+  ConeSpheres KR, KS;
+  if (Status st = cone_spheres(R0, KR); st != Status::ok) return st;
+  if (Status st = cone_spheres(S0, KS); st != Status::ok) return st;
+  auto centre = [](const ConeSpheres& K) {
+    return Vec3d(K.m - (K.rho * K.drho / K.dm.squaredNorm()) * K.dm);
+  };
+  const Vec3d o = 0.5 * (centre(KR) + centre(KS));
+  if (!o.allFinite()) return Status::numerical_overflow;
+  if (Status st = cone_from_spheres(KR.m - o, KR.rho, KR.dm, KR.drho, R); st != Status::ok)
+    return st;
+  if (Status st = cone_from_spheres(KS.m - o, KS.rho, KS.dm, KS.drho, S); st != Status::ok)
+    return st;
+  origin = o;
+  return Status::ok;
+}
+
+Status dimension_in_frame(const LieCone& R, const LieCone& S, int& dim) {
   // One generating sphere for both cones: nothing to blend (R = S) or two
   // cones touching one sphere along one circle (not G1-joinable).
   if ((R.r0 - S.r0).norm() <= 1e-12 * R.r0.norm()) return Status::invalid_argument;
@@ -356,13 +395,9 @@ Status cyclide_blend_dimension(const LieCone& R0, const LieCone& S0, int& dim) {
   return Status::ok;
 }
 
-Status cyclide_blend_beta(const LieCone& R0, const LieCone& S0, int branch, double alpha,
-                          double& beta) {
-  if (!valid_orientation(branch)) return Status::invalid_argument;
-  if (!std::isfinite(alpha)) return Status::not_finite;
-  LieCone R, S;
-  if (Status st = normalize_cone(R0, R); st != Status::ok) return st;
-  if (Status st = normalize_cone(S0, S); st != Status::ok) return st;
+// (43) for normalized cones R, S in one frame.
+Status beta_in_frame(const LieCone& R, const LieCone& S, int branch, double alpha,
+                     double& beta) {
   const double g00 = lie_dot(R.r0, S.r0), g0p = lie_dot(R.r0, S.r_plus);
   const double gp0 = lie_dot(R.r_plus, S.r0), gpp = lie_dot(R.r_plus, S.r_plus);
   const double k = std::sqrt(lie_dot(R.r_plus, R.r_plus) * lie_dot(S.r_plus, S.r_plus));
@@ -376,13 +411,12 @@ Status cyclide_blend_beta(const LieCone& R0, const LieCone& S0, int branch, doub
   return Status::ok;
 }
 
-Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double alpha,
-                     CyclideBlend& out) {
+// Algorithm 2 on normalized cones R, S in the blend's frame: the pieces
+// come out with origin 0 and their Lie vectors in that frame.
+Status blend_in_frame(const LieCone& R, const LieCone& S, int branch, double alpha,
+                      CyclideBlend& out) {
   int dim = 0;
-  if (Status st = cyclide_blend_dimension(R0, S0, dim); st != Status::ok) return st;
-  LieCone R, S;
-  normalize_cone(R0, R);
-  normalize_cone(S0, S);
+  if (Status st = dimension_in_frame(R, S, dim); st != Status::ok) return st;
   CyclideBlend B;
   if (dim == 3) {  // Case I: A = R + S, one cyclide from r0 to s0
     B.pieces = 1;
@@ -399,7 +433,7 @@ Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double al
   }
   // Case II: T = span(r, s) on the hyperbola (43), t0 by (44).
   double beta = 0;
-  if (Status st = cyclide_blend_beta(R, S, branch, alpha, beta); st != Status::ok) return st;
+  if (Status st = beta_in_frame(R, S, branch, alpha, beta); st != Status::ok) return st;
   const Lie6d r = alpha * R.r0 + R.r_plus, s = beta * S.r0 + S.r_plus;
   const Lie6d t0 = lie_dot(s, s) * r - lie_dot(s, r) * s;
   if (!t0.allFinite()) return Status::numerical_overflow;
@@ -426,6 +460,47 @@ Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double al
   if (far_circle_normal(B.piece[0].cyclide, nj) &&
       side_sign(B.piece[0], 1, nj) * side_sign(B.piece[1], 1, nj) > 0)
     return Status::blend_folds;
+  out = B;
+  return Status::ok;
+}
+}  // namespace
+
+Status cyclide_blend_dimension(const LieCone& R0, const LieCone& S0, int& dim) {
+  LieCone R, S;
+  Vec3d origin;
+  if (Status st = common_frame(R0, S0, R, S, origin); st != Status::ok) return st;
+  return dimension_in_frame(R, S, dim);
+}
+
+Status cyclide_blend_beta(const LieCone& R0, const LieCone& S0, int branch, double alpha,
+                          double& beta) {
+  if (!valid_orientation(branch)) return Status::invalid_argument;
+  if (!std::isfinite(alpha)) return Status::not_finite;
+  LieCone R, S;
+  Vec3d origin;
+  if (Status st = common_frame(R0, S0, R, S, origin); st != Status::ok) return st;
+  return beta_in_frame(R, S, branch, alpha, beta);
+}
+
+Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double alpha,
+                     CyclideBlend& out) {
+  LieCone R, S;
+  Vec3d origin;
+  if (Status st = common_frame(R0, S0, R, S, origin); st != Status::ok) return st;
+  CyclideBlend B;
+  if (Status st = blend_in_frame(R, S, branch, alpha, B); st != Status::ok) return st;
+  // Back to global coordinates: the pieces' origin, and the glued spheres
+  // and the joint by the Lie translation by +origin.
+  const Matrix6d T = lie_translation(origin).M;
+  for (int i = 0; i < B.pieces; ++i) {
+    B.piece[i].cyclide.origin = origin;
+    B.piece[i].first = T * B.piece[i].first;
+    B.piece[i].second = T * B.piece[i].second;
+  }
+  if (B.pieces == 2) B.joint = T * B.joint;
+  if (!B.joint.allFinite() || !B.piece[0].first.allFinite() || !B.piece[0].second.allFinite() ||
+      !B.piece[1].first.allFinite() || !B.piece[1].second.allFinite())
+    return Status::numerical_overflow;
   out = B;
   return Status::ok;
 }

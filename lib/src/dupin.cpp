@@ -41,14 +41,41 @@ bool is_curve(const Matrix6d& theta) {
   return false;
 }
 
-Status finish(const Matrix6d& theta, DupinCyclide& out) {
+Status finish(const Matrix6d& theta, const Vec3d& origin, DupinCyclide& out) {
   if (!theta.allFinite()) return Status::numerical_overflow;
   if (is_curve(theta)) return Status::degenerate_cyclide;
   DupinCyclide D;
   D.theta = theta;
   D.type = dupin_laguerre_type(D);
+  D.origin = origin;
   out = D;
   return Status::ok;
+}
+
+bool has_centre(const LieSphere& s) {
+  return s.kind == LieSphereKind::sphere || s.kind == LieSphereKind::point;
+}
+
+// The Lie sphere s moved by t at the geometric level: centres and points
+// by + t, a plane x . n = lambda to x . n = lambda + n . t. No n_inf-type
+// coordinate is formed, so nothing of size |m|^2 is rounded.
+LieSphere translated(const LieSphere& s, const Vec3d& t) {
+  LieSphere r = s;
+  if (has_centre(s)) r.m = s.m + t;
+  if (s.kind == LieSphereKind::plane) r.lambda = s.lambda + s.n.dot(t);
+  return r;
+}
+
+// The local origin of a set of Lie spheres: the mean of the centres and
+// points (planes and the point at infinity have none; 0 if no input has
+// one). Summed as m / k: no overflow before the inputs themselves do.
+Vec3d centre_of(const LieSphere* s, int k) {
+  int count = 0;
+  for (int i = 0; i < k; ++i) count += has_centre(s[i]);
+  Vec3d o = Vec3d::Zero();
+  for (int i = 0; i < k; ++i)
+    if (has_centre(s[i])) o += s[i].m / double(count);
+  return o;
 }
 
 }  // namespace
@@ -62,6 +89,28 @@ Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature) {
     b[i] = a[i] / big;
     b[i] /= b[i].norm();
     if (!(std::abs(lie_dot(b[i], b[i])) <= kLieQuadricTol)) return Status::not_on_lie_quadric;
+  }
+  // The products below are translation invariant, but for spheres at
+  // distance D they are ~1/D^4 of the normalized terms and drown in their
+  // rounding (a torus moved by 1e4 read as a pencil). The Lie translation
+  // of the vectors does not help (it cancels terms of size D^2 and keeps
+  // their rounding): decode them (lie_sphere, robust weight), move them to
+  // their mean centre at the geometric level and form (4)/(7) again.
+  {
+    LieSphere s[3];
+    bool decoded = true;
+    for (int i = 0; i < 3; ++i) decoded &= lie_sphere(a[i], s[i]) == Status::ok;
+    const Vec3d origin = decoded ? centre_of(s, 3) : Vec3d::Zero();
+    if (decoded && origin.allFinite() && !origin.isZero(0)) {
+      Lie6d moved[3];
+      bool encoded = true;
+      for (int i = 0; i < 3; ++i)
+        encoded &= lie_vector(translated(s[i], -origin), moved[i]) == Status::ok;
+      for (int i = 0; encoded && i < 3; ++i) {
+        b[i] = moved[i] / moved[i].cwiseAbs().maxCoeff();
+        b[i] /= b[i].norm();
+      }
+    }
   }
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
@@ -104,6 +153,18 @@ Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature) {
 }
 
 Status dupin_from_vectors(const Lie6d (&a)[3], DupinCyclide& out) {
+  // Decode to Lie spheres and build locally (see dupin.hpp): the global
+  // vectors' n_inf-type coordinates are never combined with each other.
+  // lie_sphere has classify's input statuses (not_finite, invalid_argument
+  // for 0, not_on_lie_quadric); the §3.1 case is classified on the decoded
+  // spheres (dupin_from_spheres).
+  LieSphere s[3];
+  for (int i = 0; i < 3; ++i)
+    if (Status st = lie_sphere(a[i], s[i]); st != Status::ok) return st;
+  return dupin_from_spheres(s, out);
+}
+
+Status dupin_from_local_vectors(const Lie6d (&a)[3], DupinCyclide& out) {
   if (Status st = classify_sphere_triple(a); st != Status::ok) return st;
   Lie6d b[3];
   for (int i = 0; i < 3; ++i) {
@@ -125,21 +186,48 @@ Status dupin_from_vectors(const Lie6d (&a)[3], DupinCyclide& out) {
   double residual = 0;
   if (Status st = witt_extension(u, w, 3, theta, &residual); st != Status::ok) return st;
   if (!(residual <= 1e-6)) return Status::numerical_overflow;
-  return finish(theta, out);
+  return finish(theta, Vec3d::Zero(), out);
 }
 
 Status dupin_from_spheres(const LieSphere (&s)[3], DupinCyclide& out) {
   Lie6d a[3];
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i)  // the inputs' own statuses first
     if (Status st = lie_vector(s[i], a[i]); st != Status::ok) return st;
-  return dupin_from_vectors(a, out);
+  // The §3.1 case of the inputs as given (classify moves them to their
+  // centre itself), so that a failing build reports classify's status.
+  if (Status st = classify_sphere_triple(a); st != Status::ok) return st;
+  const Vec3d origin = centre_of(s, 3);
+  if (!origin.allFinite()) return Status::numerical_overflow;
+  // (4)/(7) of the inputs translated by -origin: |m - origin| is the
+  // inputs' spread, not their distance from 0.
+  for (int i = 0; i < 3; ++i)
+    if (Status st = lie_vector(translated(s[i], -origin), a[i]); st != Status::ok) return st;
+  DupinCyclide D;
+  if (Status st = dupin_from_local_vectors(a, D); st != Status::ok) return st;
+  D.origin = origin;
+  out = D;
+  return Status::ok;
 }
 
 Status dupin_from_subspace(const Lie6d* span, int k, DupinCyclide& out, Signature* sig) {
   if (!span) return Status::null_argument;
   if (k < 3 || k > 6) return Status::invalid_argument;
+  for (int i = 0; i < k; ++i)
+    if (!span[i].allFinite()) return Status::not_finite;
+  // The origin: the mean centre of the spanning vectors that are spheres or
+  // points; all vectors are moved there by the Lie translation (a Laguerre
+  // and Mobius map, so the span's signature is unchanged).
+  LieSphere s[6];
+  int spheres = 0;
+  for (int i = 0; i < k; ++i)
+    if (lie_sphere(span[i], s[spheres]) == Status::ok && has_centre(s[spheres])) ++spheres;
+  const Vec3d origin = centre_of(s, spheres);
+  if (!origin.allFinite()) return Status::numerical_overflow;
+  const Matrix6d T = lie_translation(-origin).M;
+  Lie6d local[6];
+  for (int i = 0; i < k; ++i) local[i] = T * span[i];
   LieSubspace A;
-  if (Status st = lie_span(span, k, A); st != Status::ok) return st;
+  if (Status st = lie_span(local, k, A); st != Status::ok) return st;
   if (sig) *sig = A.signature;
   if (A.dim != 3 || A.signature != Signature{2, 0, 1}) return Status::not_isometric;
   Matrix6d BA, BP;
@@ -155,7 +243,7 @@ Status dupin_from_subspace(const Lie6d* span, int k, DupinCyclide& out, Signatur
   theta.col(kE3) = BP.col(0);
   theta.col(kEPlus) = BP.col(1);
   theta.col(kER) = BP.col(2);
-  return finish(theta, out);
+  return finish(theta, origin, out);
 }
 
 DupinCyclide swap_families(const DupinCyclide& D) {
@@ -199,12 +287,14 @@ Status point_and_normal(const Lie6d& H, const Lie6d& N, Vec3d& c, double& w, Vec
   return Status::ok;
 }
 
-Status write_point(const Vec3d& c, const Vec3d& n, double lambda, double offset,
-                   const Vec3d& dxi, const Vec3d& dzeta, DupinPoint& out) {
+// The point in global coordinates: c + d n + origin, and the tangent plane
+// x . n = lambda + n . origin (normals and partials are translation invariant).
+Status write_point(const Vec3d& origin, const Vec3d& c, const Vec3d& n, double lambda,
+                   double offset, const Vec3d& dxi, const Vec3d& dzeta, DupinPoint& out) {
   DupinPoint P;
-  P.point = c + offset * n;
+  P.point = (c + offset * n) + origin;
   P.normal = n;
-  P.lambda = lambda;
+  P.lambda = lambda + n.dot(origin);
   P.d_xi = dxi;
   P.d_zeta = dzeta;
   if (!P.point.allFinite() || !P.normal.allFinite() || !std::isfinite(P.lambda) ||
@@ -238,7 +328,7 @@ Status dupin_eval(const DupinCyclide& D, double xi, double zeta, double offset,
   auto dnormal = [&](const Lie6d& Nd) { return Vec3d((Nd.head<3>() - n * dot_e_r(Nd)) / s); };
   const Vec3d dxi = dpoint(Hx) + offset * dnormal(Nx);
   const Vec3d dzeta = dpoint(Hz) + offset * dnormal(Nz);
-  return write_point(c, n, lambda, offset, dxi, dzeta, out);
+  return write_point(D.origin, c, n, lambda, offset, dxi, dzeta, out);
 }
 
 Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
@@ -259,7 +349,7 @@ Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
                                    n, lambda, s);
       st != Status::ok)
     return st;
-  return write_point(c, n, lambda, offset, Vec3d::Zero(), Vec3d::Zero(), out);
+  return write_point(D.origin, c, n, lambda, offset, Vec3d::Zero(), Vec3d::Zero(), out);
 }
 
 namespace {
@@ -273,18 +363,28 @@ Status scaled(HomogeneousParameter t, double& p0, double& p1) {
   p1 = t.p1 / s;
   return Status::ok;
 }
+
+// The Lie sphere of a local vector x of D, moved to global coordinates.
+Status global_sphere(const DupinCyclide& D, const Lie6d& x, LieSphere& out) {
+  LieSphere s;
+  if (Status st = lie_sphere(x, s); st != Status::ok) return st;
+  const LieSphere g = translated(s, D.origin);
+  if (!g.m.allFinite() || !std::isfinite(g.lambda)) return Status::numerical_overflow;
+  out = g;
+  return Status::ok;
+}
 }  // namespace
 
 Status dupin_sphere_xi(const DupinCyclide& D, HomogeneousParameter xi, LieSphere& out) {
   double p0, p1;
   if (Status st = scaled(xi, p0, p1); st != Status::ok) return st;
-  return lie_sphere(D.sphere_xi(p0, p1), out);
+  return global_sphere(D, D.sphere_xi(p0, p1), out);
 }
 
 Status dupin_sphere_zeta(const DupinCyclide& D, HomogeneousParameter zeta, LieSphere& out) {
   double p0, p1;
   if (Status st = scaled(zeta, p0, p1); st != Status::ok) return st;
-  return lie_sphere(D.sphere_zeta(p0, p1), out);
+  return global_sphere(D, D.sphere_zeta(p0, p1), out);
 }
 
 DupinCyclide dupin_offset(const DupinCyclide& D, double d) {

@@ -320,6 +320,21 @@ Status lie_vector(const LieSphere& s, Lie6d& out) {
   return Status::ok;
 }
 
+double lie_sphere_weight(const Lie6d& x_in) {
+  const double big = x_in.cwiseAbs().maxCoeff();
+  if (!(big > 0) || !std::isfinite(big)) return dot_n_infinity(x_in);
+  const Lie6d x = x_in / big;  // no overflow in the squares below
+  const double direct = dot_n_infinity(x);
+  const double sum = x[kEPlus] + x[kEMinus];
+  const double h2 = x.head<3>().squaredNorm(), r2 = x[kER] * x[kER];
+  // x . x = 0 gives h2 - r2 = x_-^2 - x_+^2 = -(x_+ - x_-)(x_+ + x_-). The
+  // condition numbers of the two forms (their relative rounding over eps):
+  const double cond_direct = (std::abs(x[kEPlus]) + std::abs(x[kEMinus])) / std::abs(direct);
+  const double cond_quadratic = (h2 + r2) / std::abs(h2 - r2);
+  if (sum != 0 && cond_quadratic < cond_direct) return big * (-(h2 - r2) / sum);
+  return big * direct;
+}
+
 Status lie_sphere(const Lie6d& x, LieSphere& out) {
   if (!x.allFinite()) return Status::not_finite;
   // x / max|x_i| first: x.norm() overflows for entries beyond ~1e154.
@@ -332,7 +347,7 @@ Status lie_sphere(const Lie6d& x, LieSphere& out) {
   const double er = dot_e_r(y);
   LieSphere s;
   if (std::abs(t) > 1e-12) {  // (6): -2 y / (y . n_inf) = 2m + ... + 2 rho er
-    const Lie6d z = (-2.0 / t) * y;
+    const Lie6d z = (-2.0 / lie_sphere_weight(y)) * y;
     s.m = 0.5 * z.head<3>();
     s.rho = 0.5 * z[kER];
     s.kind = std::abs(s.rho) <= 1e-12 * (1 + s.m.norm()) ? LieSphereKind::point

@@ -526,7 +526,8 @@ Status make_prrs(const RationalCurve& p1, const RationalCurve& p2,
 Status make_dupin_surface(const DupinView& view, double u0, double u1, Surface& out,
                           double* bad_u) {
   if (Status st = check_domain(u0, u1); st != Status::ok) return st;
-  if (!view.cyclide.theta.allFinite()) return Status::not_finite;
+  if (!view.cyclide.theta.allFinite() || !view.cyclide.origin.allFinite())
+    return Status::not_finite;
   for (const double* m : {view.xi_map, view.zeta_map}) {
     for (int i = 0; i < 4; ++i)
       if (!input_ok(m[i])) return Status::not_finite;

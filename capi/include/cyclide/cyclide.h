@@ -1606,15 +1606,21 @@ CYC_API int cyc_lie_transform_classify(cyc_context* ctx, const cyc_lie_transform
 #define CYC_DUPIN_PARABOLIC 2  /* II: one plane per family (cubic) */
 #define CYC_DUPIN_QUARTIC 3    /* III: quartic (e.g. a torus) */
 
-/** A Dupin cyclide (frozen): theta ROW-MAJOR (column j is theta(e_j)) and
- *  its Laguerre class. A value, validated by every function taking it:
- *  finite, theta in O(4,2) (max |theta^T J theta - J| <= 1e-8 max(1,
+/** A Dupin cyclide (frozen): theta ROW-MAJOR (column j is theta(e_j)), its
+ *  Laguerre class, and its local origin: the cyclide is theta's cyclide
+ *  translated by +origin (theta acts on local coordinates x - origin, so
+ *  that the n_inf-type coordinates of its spheres stay of the size of the
+ *  cyclide, not of |origin|^2; SPEC.md sec. 8h.3). The builders choose the
+ *  origin; points, planes and spheres this API returns are global. A value,
+ *  validated by every function taking it: finite (theta and origin),
+ *  theta in O(4,2) (max |theta^T J theta - J| <= 1e-8 max(1,
  *  max|theta|^2)) and type the class of theta; else CYC_E_INVALID_ARGUMENT
  *  (CYC_E_NOT_FINITE for NaN/Inf). Every cyc_dupin this API returns
- *  passes that check. */
+ *  passes that check. origin = {0, 0, 0} is theta's cyclide itself. */
 typedef struct cyc_dupin {
   double theta[36];
-  int type; /* CYC_DUPIN_DEGENERATE .. CYC_DUPIN_QUARTIC */
+  int type;         /* CYC_DUPIN_DEGENERATE .. CYC_DUPIN_QUARTIC */
+  double origin[3]; /* the translation of theta's cyclide */
 } cyc_dupin;
 
 /** A point of a Dupin cyclide or of its offset (frozen): point = c + d n,
