@@ -349,6 +349,9 @@ static const struct {
     {CYC_E_POINT_AT_INFINITY, "CYC_E_POINT_AT_INFINITY"},
     {CYC_E_TANGENT_GENERATING_SPHERES, "CYC_E_TANGENT_GENERATING_SPHERES"},
     {CYC_E_BLEND_FOLDS, "CYC_E_BLEND_FOLDS"},
+    {CYC_E_DEVELOPABLE, "CYC_E_DEVELOPABLE"},
+    {CYC_E_POLE_IN_GAUSS_IMAGE, "CYC_E_POLE_IN_GAUSS_IMAGE"},
+    {CYC_E_RIDGE, "CYC_E_RIDGE"},
     {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
     {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
     {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
@@ -359,7 +362,7 @@ static const struct {
 
 static void test_versions_and_names(void) {
   size_t i, j;
-  const int unknown[] = {-1, 6, 99, 128, 199, 201, 302, 402, 12345};
+  const int unknown[] = {-1, 6, 99, 131, 199, 201, 302, 402, 12345};
   CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
   CHECK(cyc_version_string() != NULL);
   CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
@@ -382,7 +385,8 @@ static void test_versions_and_names(void) {
         CYC_E_SINGLE_TOUCHING_SPHERE == 121 && CYC_E_DEGENERATE_CYCLIDE == 122 &&
         CYC_E_NOT_ISOMETRIC == 123 && CYC_E_NOT_ON_LIE_QUADRIC == 124 &&
         CYC_E_POINT_AT_INFINITY == 125 && CYC_E_TANGENT_GENERATING_SPHERES == 126 &&
-        CYC_E_BLEND_FOLDS == 127);
+        CYC_E_BLEND_FOLDS == 127 && CYC_E_DEVELOPABLE == 128 &&
+        CYC_E_POLE_IN_GAUSS_IMAGE == 129 && CYC_E_RIDGE == 130);
   CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
         CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
   CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2 && CYC_SURFACE_RINGED == 3 &&

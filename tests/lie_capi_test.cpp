@@ -111,7 +111,8 @@ TEST(LieCapiStatus, Names) {
   EXPECT_STREQ(cyc_status_name(CYC_E_TANGENT_GENERATING_SPHERES),
                "CYC_E_TANGENT_GENERATING_SPHERES");
   EXPECT_STREQ(cyc_status_name(127), "CYC_E_BLEND_FOLDS");
-  EXPECT_STREQ(cyc_status_name(128), "CYC_E_UNKNOWN");
+  EXPECT_STREQ(cyc_status_name(128), "CYC_E_DEVELOPABLE");
+  EXPECT_STREQ(cyc_status_name(131), "CYC_E_UNKNOWN");
 }
 
 // ------------------------------------------------------------ Lie spheres

@@ -636,7 +636,8 @@ TEST(SphereSkinCapi, StatusNames) {
   EXPECT_STREQ(cyc_status_name(CYC_E_CURVATURE_RADIUS_TOO_LARGE),
                "CYC_E_CURVATURE_RADIUS_TOO_LARGE");
   EXPECT_STREQ(cyc_status_name(118), "CYC_E_CURVATURE_RADIUS_TOO_LARGE");
-  EXPECT_STREQ(cyc_status_name(128), "CYC_E_UNKNOWN");
+  EXPECT_STREQ(cyc_status_name(128), "CYC_E_DEVELOPABLE");
+  EXPECT_STREQ(cyc_status_name(131), "CYC_E_UNKNOWN");
 }
 
 namespace {

@@ -53,6 +53,9 @@ CYC_SAME(CYC_E_NOT_ON_LIE_QUADRIC, not_on_lie_quadric);
 CYC_SAME(CYC_E_POINT_AT_INFINITY, point_at_infinity);
 CYC_SAME(CYC_E_TANGENT_GENERATING_SPHERES, tangent_generating_spheres);
 CYC_SAME(CYC_E_BLEND_FOLDS, blend_folds);
+CYC_SAME(CYC_E_DEVELOPABLE, developable);
+CYC_SAME(CYC_E_POLE_IN_GAUSS_IMAGE, pole_in_gauss_image);
+CYC_SAME(CYC_E_RIDGE, ridge);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
@@ -113,7 +116,8 @@ const char* cyc_status_name(int status) {
     case CYC_E_NO_TOUCHING_SPHERE: case CYC_E_SINGLE_TOUCHING_SPHERE:
     case CYC_E_DEGENERATE_CYCLIDE: case CYC_E_NOT_ISOMETRIC: case CYC_E_NOT_ON_LIE_QUADRIC:
     case CYC_E_POINT_AT_INFINITY: case CYC_E_TANGENT_GENERATING_SPHERES:
-    case CYC_E_BLEND_FOLDS:
+    case CYC_E_BLEND_FOLDS: case CYC_E_DEVELOPABLE: case CYC_E_POLE_IN_GAUSS_IMAGE:
+    case CYC_E_RIDGE:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));

@@ -42,6 +42,9 @@ enum class Status : int {
   point_at_infinity = 125,  // seed 003 (26): the point sphere is n_inf (the point lies at infinity)
   tangent_generating_spheres = 126,  // seed 003 Lemma 4.6 (i): r0 . s0 = 0, the cones' generating spheres touch
   blend_folds = 127,  // seed 003 Alg. 2: a cyclide patch meets a glued circle from the wrong side (the blend folds back)
+  developable = 128,  // seed 004 Thm. 3.2: the plane and its two partials are dependent (Psi degenerates to a curve: no envelope point)
+  pole_in_gauss_image = 129,  // seed 004 §4.2: an oriented plane has unit normal W = (0,0,1), the projection centre (no point of the isotropic model)
+  ridge = 130,  // seed 004 Fig. 3: adjacent patches share tangent planes along an edge but meet in an edge of regression
   // 200..299: numerical failure
   numerical_overflow = 200,
   // 300..399: resources

@@ -591,6 +591,9 @@ const char* status_name(Status s) noexcept {
     case Status::point_at_infinity: return "CYC_E_POINT_AT_INFINITY";
     case Status::tangent_generating_spheres: return "CYC_E_TANGENT_GENERATING_SPHERES";
     case Status::blend_folds: return "CYC_E_BLEND_FOLDS";
+    case Status::developable: return "CYC_E_DEVELOPABLE";
+    case Status::pole_in_gauss_image: return "CYC_E_POLE_IN_GAUSS_IMAGE";
+    case Status::ridge: return "CYC_E_RIDGE";
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";

@@ -42,6 +42,9 @@ enum cyc_status {
   CYC_E_POINT_AT_INFINITY = 125, /* seed 003 (26): the point sphere is n_inf (the point lies at infinity) */
   CYC_E_TANGENT_GENERATING_SPHERES = 126, /* seed 003 Lemma 4.6 (i): r0 . s0 = 0, the cones' generating spheres touch */
   CYC_E_BLEND_FOLDS = 127, /* seed 003 Alg. 2: a cyclide patch meets a glued circle from the wrong side (the blend folds back) */
+  CYC_E_DEVELOPABLE = 128, /* seed 004 Thm. 3.2: the plane and its two partials are dependent (no envelope point: a developable) */
+  CYC_E_POLE_IN_GAUSS_IMAGE = 129, /* seed 004 §4.2: a unit normal equals the projection centre W = (0,0,1) */
+  CYC_E_RIDGE = 130, /* seed 004 Fig. 3: patches share tangent planes along an edge but meet in an edge of regression */
 
   CYC_E_NUMERICAL_OVERFLOW = 200, /* values beyond the supported range */
 
