@@ -328,14 +328,23 @@ TEST(Seed003Algorithm1, PrintedSignReflectsThroughTheOrigin) {
 // centre every point lies on its two touching spheres and on the moved
 // torus to 1e-12 (1 + D), through dupin_from_spheres and through the
 // global vectors (dupin_from_vectors decodes them with the robust weight).
+// Three spheres of the torus (3, 1) about the x3-axis, moved by t, and
+// their vectors (4).
+void torus_spheres_moved_by(const Vec3d& t, LieSphere (&s)[3], Lie6d (&a)[3]) {
+  const Vec3d m[3] = {Vec3d(3, 0, 0), Vec3d(0, 3, 0), Vec3d(-3, 0, 0)};
+  for (int i = 0; i < 3; ++i) {
+    s[i] = oriented_sphere(m[i] + t, 1);
+    a[i] = vec(s[i]);
+  }
+}
+
 TEST(Seed003Algorithm1, TranslatedTorusKeepsItsAccuracy) {
   const Vec3d dir = Vec3d(0.6, -0.48, 0.64);  // |dir| = 1
   for (double dist : {1e2, 1e3, 1e4, 1e5}) {
     const Vec3d t = dist * dir;
-    const LieSphere s[3] = {oriented_sphere(Vec3d(3, 0, 0) + t, 1),
-                            oriented_sphere(Vec3d(0, 3, 0) + t, 1),
-                            oriented_sphere(Vec3d(-3, 0, 0) + t, 1)};
-    const Lie6d a[3] = {vec(s[0]), vec(s[1]), vec(s[2])};
+    LieSphere s[3];
+    Lie6d a[3];
+    torus_spheres_moved_by(t, s, a);
     DupinCyclide built[2];
     ASSERT_EQ(dupin_from_spheres(s, built[0]), Status::ok) << dist;
     ASSERT_EQ(dupin_from_vectors(a, built[1]), Status::ok) << dist;
@@ -389,6 +398,54 @@ TEST(Seed003Algorithm1, TranslatedTorusKeepsItsAccuracy) {
       }
     }
   }
+}
+
+// dupin_from_subspace works at the mean centre of its spanning spheres too:
+// they are read back as spheres and moved geometrically (a Lie translation
+// of the stored vectors restored no digits: 5e-10 at D = 1e2 before).
+TEST(Seed003Algorithm1, SubspaceFarFromTheOriginKeepsItsAccuracy) {
+  const Vec3d dir = Vec3d(0.6, -0.48, 0.64);
+  for (double dist : {1e2, 1e3, 1e4, 1e5}) {
+    const Vec3d t = dist * dir;
+    LieSphere s[3];
+    Lie6d a[3];
+    torus_spheres_moved_by(t, s, a);
+    DupinCyclide D;
+    Signature sig;
+    ASSERT_EQ(dupin_from_subspace(a, 3, D, &sig), Status::ok) << dist;
+    EXPECT_EQ(sig, (Signature{2, 0, 1}));
+    const double tol = 1e-12 * (1 + dist);
+    EXPECT_NEAR((D.origin - (t + Vec3d(0, 1, 0))).norm(), 0.0, tol);
+    for (double xi : {-2.0, 0.0, 1.0, 4.0})
+      for (double zeta : {-3.0, 0.0, 2.0}) {
+        DupinPoint P;
+        ASSERT_EQ(dupin_eval(D, xi, zeta, 0.0, P), Status::ok);
+        EXPECT_LE(torus_residual(P.point - t, 3, 1), tol) << dist;
+      }
+  }
+}
+
+// fuzz_lie finding (2026-11-23, corpus regress-far-pencil-subspace): three
+// spheres on the line x = y = z near (-85, -85, -85), each in oriented
+// contact with the next (|m_i - m_j| = rho_i - rho_j): a pencil. The Lie
+// translation of their vectors to the local origin left rounding that
+// read as R^{2,0,1}, and a "cyclide" 2e-8 off its own spheres was built.
+// Read back as spheres and moved geometrically, the span is the pencil
+// that classify_sphere_triple sees.
+TEST(Seed003Algorithm1, RegressionFarPencilSpanIsNotACyclide) {
+  const double c[3] = {-81.580090473279427, -83.422649730810377, -89.193897148217616};
+  const double rho[3] = {4.19140625, 1, -8.99609375};
+  LieSphere s[3];
+  Lie6d a[3];
+  for (int i = 0; i < 3; ++i) {
+    s[i] = oriented_sphere(c[i] * Vec3d(1, 1, 1), rho[i]);
+    a[i] = vec(s[i]);
+  }
+  EXPECT_EQ(classify_sphere_triple(a), Status::sphere_pencil);
+  DupinCyclide D;
+  Signature sig;
+  EXPECT_EQ(dupin_from_subspace(a, 3, D, &sig), Status::not_isometric);
+  EXPECT_EQ(sig, (Signature{0, 2, 0}));
 }
 
 // A hand-set origin is a plain translation of theta's cyclide, also for

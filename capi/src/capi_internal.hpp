@@ -161,6 +161,15 @@ inline const char* explain(Status s) {
       return "the two cones' generating spheres are in oriented contact (r0 . s0 = 0), a case seed 003 omits";
     case Status::blend_folds:
       return "a cyclide patch reaches a glued circle from the wrong side, so the blend folds back (try the other hyperbola branch, another alpha, or the other orientation)";
+    case Status::developable:
+      return "the plane and its two partials are dependent: the isotropic surface is a curve "
+             "here, its Lambda^-1 image a developable with no envelope point (seed 004 Thm. 3.2)";
+    case Status::pole_in_gauss_image:
+      return "a unit normal equals the projection centre W = (0, 0, 1) (seed 004 §4.2): rotate "
+             "the data so that its Gauss image avoids W";
+    case Status::ridge:
+      return "adjacent cyclide patches share tangent planes along an edge but meet in an edge of "
+             "regression (seed 004 Fig. 3)";
     case Status::numerical_overflow:
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";

@@ -159,6 +159,11 @@ Status cyclide_blend_quality(const CyclideBlend& B, double& quality);
 // [0, infinity], v = zeta).
 Status cyclide_blend_surface(const CyclideBlend& B, int i, Surface& out);
 
+// Whether every piece of B builds as a circle-family surface
+// (cyclide_blend_surface OK): the validity test of the scans of
+// cyclide_blend_auto and optimize_cyclide_blend.
+bool cyclide_blend_pieces_build(const CyclideBlend& B);
+
 // G1 at the three (two) glued circles: the largest gap and tangent-plane
 // angle from continuity reports (blend.hpp) at n samples of each circle:
 // the cone R's circle against piece 0 at u = 0, the joint (piece 0 at

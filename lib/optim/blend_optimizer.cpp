@@ -17,6 +17,7 @@
 
 #include "cyclide/prcs.hpp"
 #include "cyclide/prrs.hpp"
+#include "ceres_options.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -596,16 +597,11 @@ Solved solve_box(const Problem& P, Box& box, const BlendOptions& options, std::v
     problem.AddResidualBlock(make_cost(P, box), nullptr, s.data());
     if (!constant.empty())
       problem.SetManifold(s.data(), new ceres::SubsetManifold(n, constant));
-    ceres::Solver::Options so;
+    ceres::Solver::Options so =
+        quiet_dense_options(budget, options.function_tolerance, options.gradient_tolerance,
+                            options.parameter_tolerance);
     so.minimizer_type = ceres::TRUST_REGION;
     so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = budget;
-    so.function_tolerance = options.function_tolerance;
-    so.gradient_tolerance = options.gradient_tolerance;
-    so.parameter_tolerance = options.parameter_tolerance;
-    so.logging_type = ceres::SILENT;
-    so.num_threads = 1;
     so.update_state_every_iteration = true;
     so.callbacks.push_back(&callback);
     ceres::Solver::Summary cs;

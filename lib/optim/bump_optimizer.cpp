@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cyclide/ringed.hpp"
+#include "ceres_options.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -231,15 +232,9 @@ Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
   } else {
     problem.SetParameterBlockConstant(&tau);
   }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
-  so.num_threads = 1;
-  so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = options.function_tolerance;
-  so.gradient_tolerance = options.gradient_tolerance;
-  so.parameter_tolerance = options.parameter_tolerance;
+  const ceres::Solver::Options so =
+      quiet_dense_options(options.max_iterations, options.function_tolerance,
+                          options.gradient_tolerance, options.parameter_tolerance);
   ceres::Solver::Summary cs;
   if (options.max_iterations > 0) ceres::Solve(so, &problem, &cs);
 

@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <cmath>
+#include "ceres_options.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -71,13 +72,7 @@ Status closest_point(const Surface& S, const Vec3d& X, ClosestPoint& out) {
   problem.AddResidualBlock(new PointResidual(S, X), nullptr, &u, &v);
   problem.SetParameterLowerBound(&u, 0, S.u0);
   problem.SetParameterUpperBound(&u, 0, S.u1);
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = 100;
-  options.function_tolerance = 1e-16;
-  options.gradient_tolerance = 1e-16;
-  options.parameter_tolerance = 1e-14;
-  options.logging_type = ceres::SILENT;
+  const ceres::Solver::Options options = quiet_dense_options(100, 1e-16, 1e-16, 1e-14);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   double x[3];

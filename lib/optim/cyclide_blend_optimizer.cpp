@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <vector>
+#include "ceres_options.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -229,14 +230,6 @@ double cost_at(const FamilyCost& f, double phi, std::vector<double>& r, CyclideB
   return c;
 }
 
-bool pieces_build(const CyclideBlend& B) {
-  for (int i = 0; i < B.pieces; ++i) {
-    Surface P;
-    if (cyclide_blend_surface(B, i, P) != Status::ok) return false;
-  }
-  return true;
-}
-
 // The scan: the best valid sample (its blend builds as surfaces) and the
 // box of phi around it: to half way to the first invalid sample on each
 // side (or a quarter step inside +-pi/2).
@@ -264,7 +257,7 @@ Status scan(const LieCone& R, const LieCone& S, const Residuals& res,
       CyclideBlend B;
       cost[k] = cost_at(f, phi_of(k), r, &B, &st);
       folded |= st == Status::blend_folds;
-      if (cost[k] < best.cost && !pieces_build(B)) cost[k] = HUGE_VAL;
+      if (cost[k] < best.cost && !cyclide_blend_pieces_build(B)) cost[k] = HUGE_VAL;
       if (cost[k] < best.cost) {
         best.cost = cost[k], best.branch = branch, best.blend = B, best_k = k;
         best.start = phi_of(k);
@@ -299,7 +292,7 @@ Status single_blend(const LieCone& R, const LieCone& S, const CyclideBlendObject
   if (Status st = cyclide_blend(R, S, 1, 0.0, B); st != Status::ok) return st;
   const Residuals res(objective, 1, L);
   std::vector<double> r(res.count());
-  if (!res.of_blend(B, r.data()) || !pieces_build(B)) return Status::singular_point;
+  if (!res.of_blend(B, r.data()) || !cyclide_blend_pieces_build(B)) return Status::singular_point;
   BlendSummary sum;
   res.terms(r.data(), sum);
   sum.initial_cost = sum.final_cost = sum.fairness + sum.targets + sum.obstacles + sum.regularity;
@@ -357,21 +350,15 @@ Status optimize_cyclide_blend(const LieCone& R, const LieCone& S,
                            &phi);
   problem.SetParameterLowerBound(&phi, 0, s.lower);
   problem.SetParameterUpperBound(&phi, 0, s.upper);
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
+  ceres::Solver::Options so =
+      quiet_dense_options(options.max_iterations, options.function_tolerance,
+                          options.gradient_tolerance, options.parameter_tolerance);
   // A true trust region (dogleg) starting at the scan's step: the residuals
   // do not vanish at the optimum (fairness), so Gauss-Newton's model can be
   // far off; steps start at the scale the scan resolved.
   so.trust_region_strategy_type = ceres::DOGLEG;
   so.initial_trust_region_radius = 2 * kHalfPi / options.samples;
   so.max_trust_region_radius = s.upper - s.lower;
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
-  so.num_threads = 1;
-  so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = options.function_tolerance;
-  so.gradient_tolerance = options.gradient_tolerance;
-  so.parameter_tolerance = options.parameter_tolerance;
   ceres::Solver::Summary cs;
   if (options.max_iterations > 0) ceres::Solve(so, &problem, &cs);
 
@@ -388,7 +375,7 @@ Status optimize_cyclide_blend(const LieCone& R, const LieCone& S,
   CyclideBlend B;
   double final_cost = cost_at(f, phi, r, &B, nullptr);
   if (options.max_iterations == 0 || cs.termination_type == ceres::FAILURE ||
-      !(final_cost <= s.cost) || !pieces_build(B)) {
+      !(final_cost <= s.cost) || !cyclide_blend_pieces_build(B)) {
     if (options.max_iterations > 0) sum.termination = BlendTermination::reverted;
     phi = s.start;
     B = s.blend;

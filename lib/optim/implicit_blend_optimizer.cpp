@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cyclide/quadrature.hpp"
+#include "ceres_options.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -123,15 +124,8 @@ Status solve_piece(const ImplicitBlend& B, const ContourPiece& P, const Implicit
       problem.SetParameterLowerBound(ab, k, lo[k]);
       problem.SetParameterUpperBound(ab, k, hi[k]);
     }
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.logging_type = ceres::SILENT;
-    so.minimizer_progress_to_stdout = false;
-    so.num_threads = 1;
-    so.max_num_iterations = o.max_iterations;
-    so.function_tolerance = o.function_tolerance;
-    so.gradient_tolerance = o.gradient_tolerance;
-    so.parameter_tolerance = o.parameter_tolerance;
+    const ceres::Solver::Options so = quiet_dense_options(
+        o.max_iterations, o.function_tolerance, o.gradient_tolerance, o.parameter_tolerance);
     ceres::Solve(so, &problem, &cs);
   }
   ImplicitApproxPiece r;

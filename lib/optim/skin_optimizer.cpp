@@ -5,6 +5,7 @@
 #include <ceres/ceres.h>
 
 #include <cmath>
+#include "ceres_options.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -81,13 +82,8 @@ Status optimize_skin_tangents(const SkinEnd& start, const SkinEnd& end, const Sk
     problem.SetParameterLowerBound(x, i, std::log(o.min_ratio));
     problem.SetParameterUpperBound(x, i, std::log(o.max_ratio));
   }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = o.max_iterations;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
-  so.function_tolerance = 1e-12;
-  so.parameter_tolerance = 1e-12;
+  // Ceres' default gradient tolerance (1e-10).
+  const ceres::Solver::Options so = quiet_dense_options(o.max_iterations, 1e-12, 1e-10, 1e-12);
   ceres::Solver::Summary cs;
   ceres::Solve(so, &problem, &cs);
   // The cones stay: c t = x - p is fixed, so 1/c scales with the tangent.

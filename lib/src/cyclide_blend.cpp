@@ -625,16 +625,13 @@ Status cyclide_blend_quality(const CyclideBlend& B, double& quality) {
   return Status::ok;
 }
 
-namespace {
-// The pieces build as circle-family surfaces (the scan of make_dupin_surface).
-bool pieces_build(const CyclideBlend& B) {
+bool cyclide_blend_pieces_build(const CyclideBlend& B) {
   for (int i = 0; i < B.pieces; ++i) {
     Surface P;
     if (cyclide_blend_surface(B, i, P) != Status::ok) return false;
   }
   return true;
 }
-}  // namespace
 
 Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out, int samples,
                           double* quality) {
@@ -663,7 +660,7 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
     folded |= st == Status::blend_folds;
     double q = -1;
     if (st != Status::ok || cyclide_blend_quality(B, q) != Status::ok) return -1.0;
-    if (q > bar && !pieces_build(B)) return -1.0;
+    if (q > bar && !cyclide_blend_pieces_build(B)) return -1.0;
     if (keep) *keep = B;
     return q;
   };

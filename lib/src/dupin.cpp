@@ -78,6 +78,37 @@ Vec3d centre_of(const LieSphere* s, int k) {
   return o;
 }
 
+// Moves k Lie vectors to a local origin, the mean centre of those that
+// decode as spheres or points. A vector that decodes as a Lie sphere is
+// moved at the geometric level (translated) and encoded again: the Lie
+// translation of a stored vector cancels terms of size D^2 and keeps
+// their rounding, so it restores no digits. A vector that does not decode
+// (a non-neutral vector of a spanning set) is moved by the Lie
+// translation, a Laguerre and Mobius map that keeps every product.
+// Writes local[0..k) and origin; origin is 0 (and local = a) when no input
+// has a centre. numerical_overflow if the origin or a moved vector
+// overflows.
+Status to_local_origin(const Lie6d* a, int k, Lie6d* local, Vec3d& origin) {
+  LieSphere s[6];
+  bool decoded[6] = {};
+  LieSphere centred[6];
+  int count = 0;
+  for (int i = 0; i < k; ++i) {
+    decoded[i] = lie_sphere(a[i], s[i]) == Status::ok;
+    if (decoded[i] && has_centre(s[i])) centred[count++] = s[i];
+  }
+  const Vec3d o = centre_of(centred, count);
+  if (!o.allFinite()) return Status::numerical_overflow;
+  const Matrix6d T = lie_translation(-o).M;
+  for (int i = 0; i < k; ++i) {
+    if (o.isZero(0) || !(decoded[i] && lie_vector(translated(s[i], -o), local[i]) == Status::ok))
+      local[i] = o.isZero(0) ? a[i] : Lie6d(T * a[i]);
+    if (!local[i].allFinite()) return Status::numerical_overflow;
+  }
+  origin = o;
+  return Status::ok;
+}
+
 }  // namespace
 
 Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature) {
@@ -92,25 +123,16 @@ Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature) {
   }
   // The products below are translation invariant, but for spheres at
   // distance D they are ~1/D^4 of the normalized terms and drown in their
-  // rounding (a torus moved by 1e4 read as a pencil). The Lie translation
-  // of the vectors does not help (it cancels terms of size D^2 and keeps
-  // their rounding): decode them (lie_sphere, robust weight), move them to
-  // their mean centre at the geometric level and form (4)/(7) again.
+  // rounding (a torus moved by 1e4 read as a pencil): form (4)/(7) again
+  // at the spheres' mean centre (to_local_origin).
   {
-    LieSphere s[3];
-    bool decoded = true;
-    for (int i = 0; i < 3; ++i) decoded &= lie_sphere(a[i], s[i]) == Status::ok;
-    const Vec3d origin = decoded ? centre_of(s, 3) : Vec3d::Zero();
-    if (decoded && origin.allFinite() && !origin.isZero(0)) {
-      Lie6d moved[3];
-      bool encoded = true;
-      for (int i = 0; i < 3; ++i)
-        encoded &= lie_vector(translated(s[i], -origin), moved[i]) == Status::ok;
-      for (int i = 0; encoded && i < 3; ++i) {
+    Lie6d moved[3];
+    Vec3d origin;
+    if (to_local_origin(a, 3, moved, origin) == Status::ok && !origin.isZero(0))
+      for (int i = 0; i < 3; ++i) {
         b[i] = moved[i] / moved[i].cwiseAbs().maxCoeff();
         b[i] /= b[i].norm();
       }
-    }
   }
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
@@ -214,18 +236,13 @@ Status dupin_from_subspace(const Lie6d* span, int k, DupinCyclide& out, Signatur
   if (k < 3 || k > 6) return Status::invalid_argument;
   for (int i = 0; i < k; ++i)
     if (!span[i].allFinite()) return Status::not_finite;
-  // The origin: the mean centre of the spanning vectors that are spheres or
-  // points; all vectors are moved there by the Lie translation (a Laguerre
-  // and Mobius map, so the span's signature is unchanged).
-  LieSphere s[6];
-  int spheres = 0;
-  for (int i = 0; i < k; ++i)
-    if (lie_sphere(span[i], s[spheres]) == Status::ok && has_centre(s[spheres])) ++spheres;
-  const Vec3d origin = centre_of(s, spheres);
-  if (!origin.allFinite()) return Status::numerical_overflow;
-  const Matrix6d T = lie_translation(-origin).M;
+  // At a local origin (to_local_origin): spanning vectors that are Lie
+  // spheres are read back as spheres and moved geometrically, the others by
+  // the Lie translation (a Laguerre and Mobius map, so the span's signature
+  // is unchanged).
   Lie6d local[6];
-  for (int i = 0; i < k; ++i) local[i] = T * span[i];
+  Vec3d origin;
+  if (Status st = to_local_origin(span, k, local, origin); st != Status::ok) return st;
   LieSubspace A;
   if (Status st = lie_span(local, k, A); st != Status::ok) return st;
   if (sig) *sig = A.signature;
