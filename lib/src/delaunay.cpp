@@ -34,20 +34,6 @@ inline void two_prod(double a, double b, double& x, double& y) noexcept {
   y = std::fma(a, b, -x);
 }
 
-// h = e + b; h has room for m + 1 components; returns its length.
-int grow_expansion(const double* e, int m, double b, double* h) noexcept {
-  double q = b;
-  int k = 0;
-  for (int i = 0; i < m; ++i) {
-    double sum, err;
-    two_sum(q, e[i], sum, err);
-    if (err != 0) h[k++] = err;
-    q = sum;
-  }
-  if (q != 0 || k == 0) h[k++] = q;
-  return k;
-}
-
 // h = b * e (h has room for 2m components).
 int scale_expansion(const double* e, int m, double b, double* h) noexcept {
   double q, err;
@@ -75,11 +61,29 @@ struct Exp {
   int n = 0;
 };
 
-// acc += f, one component at a time (grow_expansion works in place: it
-// writes h[k] only after reading e[i], k <= i).
+// acc += f in linear time: merge the components by magnitude, then sweep
+// two_sum through them from the smallest, emitting the nonzero roundoffs.
+// For strongly non-overlapping inputs (which two_sum, two_prod, this sum and
+// scale_expansion produce) the result is strongly non-overlapping and in
+// increasing magnitude again (Shewchuk 1997, the fast expansion sum), so
+// its last component carries the sign.
 template <int Cap>
 void add_to(Exp<Cap>& acc, const double* f, int n) noexcept {
-  for (int j = 0; j < n; ++j) acc.n = grow_expansion(acc.c, acc.n, f[j], acc.c);
+  double merged[Cap];
+  int i = 0, j = 0, k = 0;
+  while (i < acc.n && j < n) merged[k++] = std::fabs(acc.c[i]) <= std::fabs(f[j]) ? acc.c[i++] : f[j++];
+  while (i < acc.n) merged[k++] = acc.c[i++];
+  while (j < n) merged[k++] = f[j++];
+  double q = k > 0 ? merged[0] : 0.0;
+  int len = 0;
+  for (int m = 1; m < k; ++m) {
+    double sum, err;
+    two_sum(q, merged[m], sum, err);
+    if (err != 0) acc.c[len++] = err;
+    q = sum;
+  }
+  if (q != 0 || len == 0) acc.c[len++] = q;
+  acc.n = len;
 }
 
 template <int Cap, int A, int B>
