@@ -166,7 +166,7 @@ inline Continuity continuity(const std::vector<cyclide::QuadraticGraphTriangle>&
 inline cyclide::Status triangulate(const std::vector<Vec2d>& pts, std::vector<Tri>& tri,
                                    cyclide::DelaunayReport* report = nullptr) {
   const int n = static_cast<int>(pts.size());
-  std::vector<int> work(cyclide::delaunay_workspace_size(n) + 1);
+  std::vector<int> work(cyclide::delaunay_workspace_size(n));
   std::vector<Tri> out(std::max(1, cyclide::delaunay_max_triangles(n)));
   int ntri = -1;
   const cyclide::Status s =
