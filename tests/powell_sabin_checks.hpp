@@ -44,12 +44,8 @@ inline ld hull_area(std::vector<Vec2d> p) {
     h[k++] = p[i];
   }
   h.resize(k - 1);
-  ld area = 0;
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    const Vec2d& a = h[i];
-    const Vec2d& b = h[(i + 1) % h.size()];
-    area += (ld(a.x()) * b.y() - ld(b.x()) * a.y()) / 2;
-  }
+  ld area = 0;  // a fan from h[0]: differences, not absolute coordinates
+  for (std::size_t i = 1; i + 1 < h.size(); ++i) area += cross_ld(h[0], h[i], h[i + 1]) / 2;
   return area;
 }
 

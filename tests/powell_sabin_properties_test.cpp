@@ -70,6 +70,26 @@ Quadratic random_quadratic() {
   return f;
 }
 
+// The orientation sign of lattice points 1 + k 2^-50 from their integer
+// offsets (independent of the code's predicates).
+int orient_exact_lattice(const Vec2d& a, const Vec2d& b, const Vec2d& c) {
+  const auto k = [](double x) { return static_cast<long long>(std::ldexp(x - 1, 50)); };
+  const long long d = (k(a.x()) - k(c.x())) * (k(b.y()) - k(c.y())) -
+                      (k(a.y()) - k(c.y())) * (k(b.x()) - k(c.x()));
+  return (d > 0) - (d < 0);
+}
+
+int incircle_exact_lattice(const Vec2d& a, const Vec2d& b, const Vec2d& c, const Vec2d& d) {
+  const auto k = [](double x) { return static_cast<long long>(std::ldexp(x - 1, 50)); };
+  const long long adx = k(a.x()) - k(d.x()), ady = k(a.y()) - k(d.y());
+  const long long bdx = k(b.x()) - k(d.x()), bdy = k(b.y()) - k(d.y());
+  const long long cdx = k(c.x()) - k(d.x()), cdy = k(c.y()) - k(d.y());
+  const long long det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                        (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                        (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return (det > 0) - (det < 0);
+}
+
 // Smallest angle (radians) of the triangles: the properties assume
 // well-shaped macro triangles.
 double min_angle(const std::vector<Vec2d>& pts, const std::vector<Tri>& tri) {
@@ -106,6 +126,36 @@ RC_GTEST_PROP(DelaunayProperties, ExactGridsWithTies, ()) {
   RC_ASSERT(triangulate(pts, tri) == Status::ok);
   RC_ASSERT(check_triangulation(pts, tri, kAreaTol) == "");
   RC_ASSERT(tri.size() == 2u * (nx - 1) * (ny - 1));
+}
+
+RC_GTEST_PROP(DelaunayProperties, RandomLatticeSubsetsWithTies, ()) {
+  // Distinct points of a 7 x 7 lattice around 1.0 with spacing 2^-50 (a few
+  // ulps): collinear and cocircular quadruples everywhere, every predicate
+  // decided by the exact fallback. Collinear subsets must be reported.
+  const int count = pick(3, 30);
+  std::vector<Vec2d> pts;
+  std::vector<int> used(49, 0);
+  for (int k = 0; k < count; ++k) {
+    const int c = pick(0, 48);
+    if (used[c]) continue;
+    used[c] = 1;
+    pts.emplace_back(1 + std::ldexp(c % 7, -50), 1 + std::ldexp(c / 7, -50));
+  }
+  RC_PRE(pts.size() >= 3u);
+  bool collinear = true;
+  for (std::size_t i = 2; i < pts.size(); ++i)
+    if (orient_exact_lattice(pts[0], pts[1], pts[i]) != 0) collinear = false;
+  std::vector<Tri> tri;
+  const Status s = triangulate(pts, tri);
+  if (collinear) {
+    RC_ASSERT(s == Status::collinear_points);
+    return;
+  }
+  RC_ASSERT(s == Status::ok);
+  RC_ASSERT(check_triangulation(pts, tri, kAreaTol) == "");
+  // Empty circumcircles, decided exactly on the integer offsets.
+  for (const Tri& t : tri)
+    for (const Vec2d& d : pts) RC_ASSERT(incircle_exact_lattice(pts[t[0]], pts[t[1]], pts[t[2]], d) <= 0);
 }
 
 RC_GTEST_PROP(PowellSabinProperties, QuadraticPrecision, ()) {
