@@ -525,6 +525,47 @@ TEST(PowellSabin, C1AcrossMicroAndMacroEdges) {
   EXPECT_LT(c.max_gradient_gap, 1e-10);
 }
 
+TEST(PowellSabin, UserTriangulationWithSkinnyTriangles) {
+  // A caller's (non-Delaunay) triangulation of a fan around a centre with
+  // thin triangles: still quadratic precision and C^1.
+  std::vector<Vec2d> pts = {{0, 0}};
+  const int m = 12;
+  for (int k = 0; k < m; ++k) {
+    const double a = 2 * M_PI * k / m + (k % 2 ? 0.35 : 0.0);  // uneven angles
+    pts.emplace_back((k % 3 ? 1.0 : 3.0) * std::cos(a), (k % 3 ? 1.0 : 3.0) * std::sin(a));
+  }
+  std::vector<Tri> tri;
+  for (int k = 0; k < m; ++k) {
+    const int a = 1 + k, b = 1 + (k + 1) % m;
+    if (orient2d_sign(pts[0], pts[a], pts[b]) > 0) tri.push_back({0, a, b});
+  }
+  ASSERT_EQ(tri.size(), static_cast<std::size_t>(m));
+  Quadratic f;
+  f.c = 1;
+  f.l = Vec2d(0.5, -2);
+  f.qxx = -1;
+  f.qxy = 3;
+  f.qyy = 0.5;
+  const Data d = sample(pts, [&](const Vec2d& p) { return f.value(p); },
+                        [&](const Vec2d& p) { return f.gradient(p); });
+  std::vector<QuadraticGraphTriangle> patches;
+  ASSERT_EQ(interpolate(d.b, d.z, d.g, tri, patches), Status::ok);
+  for (const auto& q : patches) {
+    const Vec2d c = (q.vertex[0] + q.vertex[1] + q.vertex[2]) / 3;
+    double v;
+    Vec2d g;
+    quadratic_graph_eval(q, c, v, g);
+    EXPECT_NEAR(v, f.value(c), 1e-12 * (1 + std::fabs(f.value(c))));
+    EXPECT_LT((g - f.gradient(c)).norm(), 1e-11 * (1 + f.gradient(c).norm()));
+  }
+  const Data e = sample(pts, smooth, smooth_gradient);
+  ASSERT_EQ(interpolate(e.b, e.z, e.g, tri, patches), Status::ok);
+  const Continuity c = continuity(patches);
+  EXPECT_GE(c.shared_edges, 6 * m + 2 * m);
+  EXPECT_LT(c.max_value_gap, 1e-12);
+  EXPECT_LT(c.max_gradient_gap, 1e-10);
+}
+
 TEST(PowellSabin, StatusesAndUntouchedOutputs) {
   const std::vector<Vec2d> b = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   const std::vector<double> z = {0, 1, 2, 1};
