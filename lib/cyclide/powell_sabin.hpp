@@ -52,7 +52,8 @@ std::size_t powell_sabin_workspace_size(int ntri) noexcept;
 //   not_finite        a NaN/Inf or |x| > 1e100 among b, z, g
 //   buffer_too_small  work_len < powell_sabin_workspace_size(ntri), or
 //                     out_cap < 6 ntri (nout gets 6 ntri)
-//   numerical_overflow  an ordinate overflowed (huge gradients times spans)
+//   numerical_overflow  a non-finite ordinate (a guard: inputs within 1e100
+//                       keep every ordinate below ~1e201)
 // On error out is untouched.
 Status powell_sabin_interpolate(const Vec2d* b, const double* z, const Vec2d* g, int n,
                                 const int (*tri)[3], int ntri, int* work, std::size_t work_len,

@@ -168,7 +168,8 @@ int incircle_exact(const Vec2d& a, const Vec2d& b, const Vec2d& c, const Vec2d& 
   const Exp<16> alift = sum<16>(product<8>(adx, adx), product<8>(ady, ady));
   const Exp<16> blift = sum<16>(product<8>(bdx, bdx), product<8>(bdy, bdy));
   const Exp<16> clift = sum<16>(product<8>(cdx, cdx), product<8>(cdy, cdy));
-  // About 17 KB of stack: one accumulator of worst-case length 3 * 16 * 16 * 2.
+  // About 25 KB of stack: an accumulator of worst-case length 3 * 16 * 16 * 2
+  // and the merge buffer of add_to.
   Exp<1536> total;
   total.c[0] = 0;
   total.n = 1;
