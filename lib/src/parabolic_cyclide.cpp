@@ -156,7 +156,12 @@ Status parabolic_cyclide_from_quadratic(const GraphQuadratic& q, ParabolicCyclid
   }
   // Quadratic part y^T M y, M = [q20, q11/2; q11/2, q02] = R diag(l1, l2) R^T
   // with R the rotation by theta, tan 2 theta = q11 / (q20 - q02).
-  const double theta = 0.5 * std::atan2(q.q11, q.q20 - q.q02);
+  // theta in (-pi/4, pi/4]: the smallest rotation (the normal form q = -(a y1^2
+  // + b y2^2) keeps the identity frame and its a, b in place).
+  const double quarter = std::atan(1.0);
+  double theta = 0.5 * std::atan2(q.q11, q.q20 - q.q02);
+  if (theta > quarter) theta -= 2 * quarter;
+  if (theta <= -quarter) theta += 2 * quarter;
   const double cs = std::cos(theta), sn = std::sin(theta);
   const double h = q.q11 / 2;
   const double l1 = q.q20 * cs * cs + 2 * h * sn * cs + q.q02 * sn * sn;
