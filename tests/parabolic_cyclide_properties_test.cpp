@@ -44,32 +44,29 @@ constexpr double kNetTol = 1e-11;
 constexpr double kPatchTol = 1e-12;
 constexpr double kEdgeTol = 1e-12;
 
+// Uniform at every size (inRange alone scales with RapidCheck's size).
 double uniform(double lo, double hi) {
-  const int k = *rc::gen::inRange(0, 1 << 30);
+  const int k = *rc::gen::resize(100, rc::gen::inRange(0, 1 << 30));
   return lo + (hi - lo) * (k / double(1 << 30));
 }
 double away_from_zero(double lo, double hi) {  // |x| in [lo, hi], random sign
   const double m = uniform(lo, hi);
-  const bool neg = *rc::gen::arbitrary<bool>();
+  const bool neg = *rc::gen::resize(100, rc::gen::inRange(0, 2)) == 1;
   return neg ? -m : m;
 }
 
 Eigen::Matrix3d random_rotation() {
   double q[4];
-  double n2 = 0;
-  do {
-    for (double& x : q) x = uniform(-1, 1);
-    n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-  } while (n2 < 0.1);
+  for (double& x : q) x = uniform(-1, 1);
+  RC_PRE(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] >= 0.1);
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
 }
 
 ParabolicCyclide random_cyclide() {
   ParabolicCyclide c;
-  do {
-    c.a = away_from_zero(0.1, 2);
-    c.b = away_from_zero(0.1, 2);
-  } while (std::abs(c.a - c.b) < 0.1);
+  c.a = away_from_zero(0.1, 2);
+  c.b = away_from_zero(0.1, 2);
+  RC_PRE(std::abs(c.a - c.b) >= 0.1);
   c.frame = random_rotation();
   const double o0 = uniform(-5, 5);
   const double o1 = uniform(-5, 5);
@@ -154,13 +151,13 @@ QuadraticGraphTriangle triangle_of(const GraphQuadratic& q, const Vec2d V[3]) {
 }
 
 void random_triangle(Vec2d V[3]) {
-  do {
-    for (int i = 0; i < 3; ++i) {
-      const double x = uniform(-2, 2);
-      const double y = uniform(-2, 2);
-      V[i] = Vec2d(x, y);
-    }
-  } while (std::abs((V[1] - V[0]).x() * (V[2] - V[0]).y() - (V[1] - V[0]).y() * (V[2] - V[0]).x()) < 0.1);
+  for (int i = 0; i < 3; ++i) {
+    const double x = uniform(-2, 2);
+    const double y = uniform(-2, 2);
+    V[i] = Vec2d(x, y);
+  }
+  const Vec2d d1 = V[1] - V[0], d2 = V[2] - V[0];
+  RC_PRE(std::abs(d1.x() * d2.y() - d1.y() * d2.x()) >= 0.1);  // area >= 0.05
 }
 
 }  // namespace
