@@ -7,7 +7,10 @@
 // Tolerances (named below so SPEC can quote them):
 //
 //   constant          value   meaning
-//   kImplicitTol      1e-12   |(4.2)| / (sum of |terms| of (4.2)) at a point that lies on Phi
+//   kImplicitTol      1e-11   |(4.2)| / (sum of |terms| of (4.2)) at a point that lies on Phi
+//                             (world points taken back to the frame: origins up to 5 cost digits)
+//   kDerivedTol       1e-10   the same for a cyclide derived from a quadratic (Thm 4.1): its
+//                             a, b and rotation carry the rounding of the 2x2 eigenproblem
 //   kTangentTol       1e-10   |G ^ P| / (|G| |P|): gradient G of (4.2) vs the dual plane P
 //                             (only where |G| >= 1e-6 |X|^2, away from singular points)
 //   kCircleTol        1e-12   distances to a parameter circle / its plane, over (1 + |x|)
@@ -36,7 +39,8 @@ using namespace cyclide;
 
 namespace {
 
-constexpr double kImplicitTol = 1e-12;
+constexpr double kImplicitTol = 1e-11;
+constexpr double kDerivedTol = 1e-10;
 constexpr double kTangentTol = 1e-10;
 constexpr double kCircleTol = 1e-12;
 constexpr double kAngleTol = 1e-12;
@@ -212,7 +216,7 @@ RC_GTEST_PROP(ParabolicCyclideProperties, QuadraticGraphsAreMovedNormalForms, ()
   const double y1 = uniform(-3, 3);
   const double y2 = uniform(-3, 3);
   const Vec3d x = envelope(q, Vec2d(y1, y2));
-  RC_ASSERT(implicit_rel(c, x) <= kImplicitTol);
+  RC_ASSERT(implicit_rel(c, x) <= kDerivedTol);
   // Round trip q -> cyclide -> q.
   GraphQuadratic r;
   RC_ASSERT(quadratic_of_parabolic_cyclide(c, r) == Status::ok);
@@ -227,7 +231,7 @@ RC_GTEST_PROP(ParabolicCyclideProperties, QuadraticGraphsAreMovedNormalForms, ()
   IsotropicPoint ip;
   ip.y = Vec3d(y1, y2, 0);
   RC_ASSERT(isotropic_to_laguerre(ip, pl) == Status::ok);
-  RC_ASSERT(implicit_rel(co, x + dist * pl.e) <= 10 * kImplicitTol);
+  RC_ASSERT(implicit_rel(co, x + dist * pl.e) <= kDerivedTol);
 }
 
 RC_GTEST_PROP(ParabolicCyclideProperties, ConesOfRevolutionAlongCubicCircles, ()) {
@@ -293,7 +297,7 @@ RC_GTEST_PROP(ParabolicCyclideProperties, CubicTrianglesAreEnvelopesOnTheCyclide
   RC_ASSERT((x - xe).norm() <= kPatchTol * (1 + xe.norm()));
   ParabolicCyclide c;
   if (parabolic_cyclide_from_quadratic(q, c) == Status::ok && std::abs(c.a) + std::abs(c.b) >= 0.05)
-    RC_ASSERT(implicit_rel(c, x) <= kImplicitTol);
+    RC_ASSERT(implicit_rel(c, x) <= kDerivedTol);
 }
 
 RC_GTEST_PROP(ParabolicCyclideProperties, BicubicPatchesAreEnvelopes, ()) {
