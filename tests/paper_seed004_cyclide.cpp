@@ -337,6 +337,14 @@ TEST(Seed004Cyclide, Remark42NetProjection) {
         EXPECT_NEAR(uv[1], v, 1e-12);
         // Independent inversion read off (4.1): x1 = -u (x3 - a), x2 = -v (x3 - b).
         EXPECT_NEAR(uv[0], l[0] / (c.a - l[2]), 1e-12);
+        // Off Phi: a point of the same net line (through E = (0, (b - a) v, a) and
+        // F = ((a - b) u, 0, b), local) has the parameter of its third point on Phi.
+        const Vec3d E(0, (c.b - c.a) * v, c.a), F((c.a - c.b) * u, 0, c.b);
+        const Vec3d off = c.origin + c.frame * (l + 0.37 * (F - E));
+        Vec2d uv_off;
+        ASSERT_EQ(parameter_of(c, off, uv_off), Status::ok);
+        EXPECT_NEAR(uv_off[0], u, 1e-11);
+        EXPECT_NEAR(uv_off[1], v, 1e-11);
       }
   // Points of e and f: their parameter is at infinity.
   Vec2d uv(9, 9);

@@ -72,10 +72,10 @@ Vec4d parabolic_cyclide_psi(double a, double b, double u, double v) noexcept;
 // Validates a cyclide: a, b, frame, origin finite and within kMaxInputMagnitude
 // (not_finite), frame a rotation to 1e-12 (invalid_argument), a = b = 0
 // (degenerate_cyclide: a point, not a surface).
-Status validate(const ParabolicCyclide& c) noexcept;
+Status validate_parabolic_cyclide(const ParabolicCyclide& c) noexcept;
 
 // The world point phi(u, v) / phi0 (phi0 = 1 + u^2 + v^2 > 0 always).
-// Statuses of validate; not_finite for bad (u, v); numerical_overflow.
+// Statuses of validate_parabolic_cyclide; not_finite for bad (u, v); numerical_overflow.
 Status parabolic_cyclide_point(const ParabolicCyclide& c, double u, double v, Vec3d& x) noexcept;
 
 // The unit normal n(u, v) = frame (2u, 2v, u^2 + v^2 - 1) / (1 + u^2 + v^2)
@@ -145,7 +145,7 @@ struct RevolutionCone {
                                  // touches Phi along e (its plane at t -> oo is x3 = a)
 };
 // dependent_planes when P0, P1, P2 are dependent (mu = 0 and a + b lambda^2 = 0:
-// a pencil of planes, no cone); statuses of validate.
+// a pencil of planes, no cone); statuses of validate_parabolic_cyclide.
 Status cubic_circle_cone(const ParabolicCyclide& c, double lambda, double mu,
                          RevolutionCone& out) noexcept;
 // c(lambda, mu)(t) = phi(t, lambda t + mu), world.
@@ -159,7 +159,7 @@ Status cubic_circle_point(const ParabolicCyclide& c, double lambda, double mu, d
 // x3 = cc (local). For x = phi(u, v) the result is ((a - cc) u, (b - cc) v).
 // invalid_argument for a sphere (a = b: e and f meet); point_at_infinity when x
 // lies in a plane x3 = a or x3 = b (on e or f, or its net line is parallel to
-// e or f: the parameter is at infinity); statuses of validate.
+// e or f: the parameter is at infinity); statuses of validate_parabolic_cyclide.
 Status net_projection(const ParabolicCyclide& c, const Vec3d& x, double cc, Vec2d& out) noexcept;
 
 // (u, v) with phi(u, v) = x: the net projection with cc = (a + b) / 2 (a

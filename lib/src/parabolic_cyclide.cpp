@@ -59,7 +59,7 @@ Vec4d parabolic_cyclide_psi(double a, double b, double u, double v) noexcept {
   return Vec4d(-(a * u * u + b * v * v), 2 * u, 2 * v, u * u + v * v - 1);
 }
 
-Status validate(const ParabolicCyclide& c) noexcept {
+Status validate_parabolic_cyclide(const ParabolicCyclide& c) noexcept {
   if (!valid(c.a) || !valid(c.b) || !valid(c.frame) || !valid(c.origin)) return Status::not_finite;
   const Eigen::Matrix3d G = c.frame.transpose() * c.frame - Eigen::Matrix3d::Identity();
   if (G.cwiseAbs().maxCoeff() > kFrameTol || c.frame.determinant() < 0) return Status::invalid_argument;
@@ -68,7 +68,7 @@ Status validate(const ParabolicCyclide& c) noexcept {
 }
 
 Status parabolic_cyclide_point(const ParabolicCyclide& c, double u, double v, Vec3d& x) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(u) || !valid(v)) return Status::not_finite;
   const Vec4d X = parabolic_cyclide_phi(c.a, c.b, u, v);
@@ -79,7 +79,7 @@ Status parabolic_cyclide_point(const ParabolicCyclide& c, double u, double v, Ve
 }
 
 Status parabolic_cyclide_normal(const ParabolicCyclide& c, double u, double v, Vec3d& n) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(u) || !valid(v)) return Status::not_finite;
   OrientedPlane p;  // Lambda^{-1} of (u, v, y3): the normal does not depend on y3
@@ -128,14 +128,14 @@ Status finish_circle(const ParabolicCyclide& c, const Circle3& L, Circle3& out) 
 }  // namespace
 
 Status parabolic_u_circle(const ParabolicCyclide& c, double u, Circle3& out) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(u)) return Status::not_finite;
   return finish_circle(c, local_u_circle(c.a, c.b, u), out);
 }
 
 Status parabolic_v_circle(const ParabolicCyclide& c, double v, Circle3& out) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(v)) return Status::not_finite;
   // (4.1) is symmetric under (x1, x2, a, u) <-> (x2, x1, b, v).
@@ -182,7 +182,7 @@ Status parabolic_cyclide_from_quadratic(const GraphQuadratic& q, ParabolicCyclid
 }
 
 Status quadratic_of_parabolic_cyclide(const ParabolicCyclide& c, GraphQuadratic& out) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!about_x3(c.frame)) return Status::invalid_argument;
   const Vec3d& t = c.origin;
@@ -226,7 +226,7 @@ Status graph_envelope_point(const GraphQuadratic& q, const Vec2d& y, Vec4d& X) n
 
 Status cubic_circle_cone(const ParabolicCyclide& c, double lambda, double mu,
                          RevolutionCone& out) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(lambda) || !valid(mu)) return Status::not_finite;
   const double a = c.a, b = c.b, l = lambda, m = mu;
@@ -278,7 +278,7 @@ Status meet_line_plane(const Vec3d& A, const Vec3d& e, const Vec3d& x, const Vec
 }  // namespace
 
 Status net_projection(const ParabolicCyclide& c, const Vec3d& x, double cc, Vec2d& out) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(x) || !valid(cc)) return Status::not_finite;
   if (c.a == c.b) return Status::invalid_argument;  // e and f meet: no hyperbolic net
@@ -299,7 +299,7 @@ Status net_projection(const ParabolicCyclide& c, const Vec3d& x, double cc, Vec2
 }
 
 Status parameter_of(const ParabolicCyclide& c, const Vec3d& x, Vec2d& uv) noexcept {
-  const Status st = validate(c);
+  const Status st = validate_parabolic_cyclide(c);
   if (st != Status::ok) return st;
   if (!valid(x)) return Status::not_finite;
   if (c.a == c.b) {
