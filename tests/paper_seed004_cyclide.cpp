@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 
 #include "cyclide/bezier_triangle.hpp"
 #include "cyclide/laguerre.hpp"
@@ -422,4 +423,50 @@ TEST(Seed004Cyclide, WeightsAndPointsAtInfinity) {
   EXPECT_EQ(x, Vec3d(5, 5, 5));
   T.vertex[2] = Vec2d(0, 0);  // collinear domain
   EXPECT_EQ(cyclide_cubic_triangle(T, C), Status::collinear_points);
+}
+
+// House rules: invalid inputs are reported and leave the outputs untouched.
+TEST(Seed004Cyclide, InvalidInputsAreReported) {
+  const Vec3d sentinel(4, 4, 4);
+  ParabolicCyclide c;
+  Vec3d x = sentinel;
+  c.a = std::nan("");
+  EXPECT_EQ(parabolic_cyclide_point(c, 0, 0, x), Status::not_finite);
+  c.a = 1e101;
+  EXPECT_EQ(parabolic_cyclide_point(c, 0, 0, x), Status::not_finite);
+  c.a = 1;
+  c.frame(0, 0) = 2;  // not a rotation
+  EXPECT_EQ(parabolic_cyclide_point(c, 0, 0, x), Status::invalid_argument);
+  c.frame = Eigen::Matrix3d::Identity();
+  EXPECT_EQ(parabolic_cyclide_point(c, std::nan(""), 0, x), Status::not_finite);
+  EXPECT_EQ(x, sentinel);
+  // A frame that is not a rotation about x3 has no quadratic (4.4).
+  c.frame = Eigen::AngleAxisd(0.3, Vec3d(1, 0, 0)).toRotationMatrix();
+  GraphQuadratic q{1, 2, 3, 4, 5, 6};
+  EXPECT_EQ(quadratic_of_parabolic_cyclide(c, q), Status::invalid_argument);
+  EXPECT_EQ(q.q00, 6);
+  ParabolicCyclide out;
+  out.a = 7;
+  EXPECT_EQ(parabolic_cyclide_from_quadratic(GraphQuadratic{1, 0, 0, std::nan(""), 0, 0}, out),
+            Status::not_finite);
+  EXPECT_EQ(out.a, 7);
+  QuadraticGraphTriangle T;
+  T.vertex[0] = Vec2d(0, 0);
+  T.vertex[1] = Vec2d(1, 0);
+  T.vertex[2] = Vec2d(0, 1);
+  T.ordinate[3] = std::numeric_limits<double>::infinity();
+  RationalCubicTriangle C;
+  C.control[0] = Vec4d(9, 9, 9, 9);
+  EXPECT_EQ(cyclide_cubic_triangle(T, C), Status::not_finite);
+  EXPECT_EQ(C.control[0], Vec4d(9, 9, 9, 9));
+  RationalBicubicPatch B;
+  B.control[0][0] = Vec4d(9, 9, 9, 9);
+  EXPECT_EQ(cyclide_bicubic_patch(q, Vec2d(0, 0), Vec2d(1, 1), Vec2d(2, 2), B),
+            Status::collinear_points);
+  EXPECT_EQ(B.control[0][0], Vec4d(9, 9, 9, 9));
+  Vec2d uv(3, 3);
+  ParabolicCyclide s;
+  s.a = s.b = 1;  // a sphere: e and f meet, no hyperbolic net
+  EXPECT_EQ(net_projection(s, Vec3d(0.1, 0.2, 0.3), 0.5, uv), Status::invalid_argument);
+  EXPECT_EQ(uv, Vec2d(3, 3));
 }
