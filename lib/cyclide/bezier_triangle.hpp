@@ -12,6 +12,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "cyclide/status.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -37,6 +42,81 @@ struct RationalCubicTriangle {
 struct RationalBicubicPatch {
   Eigen::Vector4d control[4][4];
 };
+
+// ------------------------------------------------------------- evaluators
+// De Casteljau on the homogeneous control points (weights may be <= 0; the
+// homogeneous point is what is interpolated). The affine point is x = X / w.
+// point_at_infinity when |w| <= 64 eps max_i |control_i|_inf (the weight
+// polynomial vanishes there: the point lies at infinity); not_finite for
+// NaN/Inf parameters. On error x is untouched.
+
+// Homogeneous point of the cubic triangle at barycentrics (r, s, t).
+inline Eigen::Vector4d evaluate_homogeneous(const RationalCubicTriangle& T, double r, double s,
+                                            double t) noexcept {
+  // Work array in the documented order; each step lowers the degree by one:
+  // b^{n-1}_{ijk} = r b_{i+1,j,k} + s b_{i,j+1,k} + t b_{i,j,k+1}.
+  Eigen::Vector4d b[10];
+  for (int i = 0; i < 10; ++i) b[i] = T.control[i];
+  // index of (i, j) in degree n (k = n - i - j): rows by descending i.
+  auto idx = [](int n, int i, int j) {
+    int before = 0;  // coefficients with a larger i
+    for (int ii = n; ii > i; --ii) before += n - ii + 1;
+    return before + (n - i - j);
+  };
+  for (int n = 3; n > 0; --n) {
+    Eigen::Vector4d c[10];
+    for (int i = n - 1; i >= 0; --i)
+      for (int j = n - 1 - i; j >= 0; --j)
+        c[idx(n - 1, i, j)] = r * b[idx(n, i + 1, j)] + s * b[idx(n, i, j + 1)] + t * b[idx(n, i, j)];
+    for (int i = 0; i < 10; ++i) b[i] = c[i];
+  }
+  return b[0];
+}
+
+// Homogeneous point of the bicubic at (s, t) (s along the first index).
+inline Eigen::Vector4d evaluate_homogeneous(const RationalBicubicPatch& P, double s,
+                                            double t) noexcept {
+  auto casteljau = [](Eigen::Vector4d p[4], double x) {
+    for (int n = 3; n > 0; --n)
+      for (int i = 0; i < n; ++i) p[i] = (1 - x) * p[i] + x * p[i + 1];
+    return p[0];
+  };
+  Eigen::Vector4d col[4];
+  for (int i = 0; i < 4; ++i) {
+    Eigen::Vector4d row[4] = {P.control[i][0], P.control[i][1], P.control[i][2], P.control[i][3]};
+    col[i] = casteljau(row, t);
+  }
+  return casteljau(col, s);
+}
+
+namespace detail {
+inline Status dehomogenize(const Eigen::Vector4d& X, double scale, Eigen::Vector3d& x) noexcept {
+  if (!X.allFinite()) return Status::numerical_overflow;
+  if (std::abs(X[0]) <= 64 * std::numeric_limits<double>::epsilon() * scale)
+    return Status::point_at_infinity;
+  const Eigen::Vector3d p = X.tail<3>() / X[0];
+  if (!p.allFinite()) return Status::numerical_overflow;
+  x = p;
+  return Status::ok;
+}
+}  // namespace detail
+
+inline Status evaluate(const RationalCubicTriangle& T, double r, double s, double t,
+                       Eigen::Vector3d& x) noexcept {
+  if (!std::isfinite(r) || !std::isfinite(s) || !std::isfinite(t)) return Status::not_finite;
+  double scale = 0;
+  for (const auto& c : T.control) scale = std::max(scale, c.cwiseAbs().maxCoeff());
+  return detail::dehomogenize(evaluate_homogeneous(T, r, s, t), scale, x);
+}
+
+inline Status evaluate(const RationalBicubicPatch& P, double s, double t,
+                       Eigen::Vector3d& x) noexcept {
+  if (!std::isfinite(s) || !std::isfinite(t)) return Status::not_finite;
+  double scale = 0;
+  for (const auto& row : P.control)
+    for (const auto& c : row) scale = std::max(scale, c.cwiseAbs().maxCoeff());
+  return detail::dehomogenize(evaluate_homogeneous(P, s, t), scale, x);
+}
 
 }  // namespace v0
 }  // namespace cyclide
