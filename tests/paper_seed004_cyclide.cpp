@@ -12,6 +12,7 @@
 #include "cyclide/bezier_triangle.hpp"
 #include "cyclide/laguerre.hpp"
 #include "cyclide/parabolic_cyclide.hpp"
+#include "cyclide/surface.hpp"
 
 using namespace cyclide;
 
@@ -469,4 +470,67 @@ TEST(Seed004Cyclide, InvalidInputsAreReported) {
   s.a = s.b = 1;  // a sphere: e and f meet, no hyperbolic net
   EXPECT_EQ(net_projection(s, Vec3d(0.1, 0.2, 0.3), 0.5, uv), Status::invalid_argument);
   EXPECT_EQ(uv, Vec2d(3, 3));
+}
+
+// The unity of the library: a parabolic Dupin cyclide is a rational family
+// of circles (its u-lines, in planes through e), evaluated by the one
+// quaternion-rotation evaluator of seed 000 (11) with f(u, v) = v; the
+// Surface reproduces (4.1) exactly, with the touching spheres of a canal
+// surface along its circles.
+TEST(Seed004Cyclide, ParabolicCyclideIsACircleFamilySurface) {
+  ParabolicCyclide c;
+  c.a = 1.5;
+  c.b = -0.75;  // a ring cyclide
+  c.frame = Eigen::AngleAxisd(0.7, Vec3d(1, 2, -0.5).normalized()).toRotationMatrix();
+  c.origin = Vec3d(3, -1, 2);
+  Surface S;
+  ASSERT_EQ(make_parabolic_cyclide_surface(c, -2, 2, S), Status::ok);
+  EXPECT_EQ(S.kind, SurfaceKind::parabolic);
+  for (double u : {-2.0, -0.6, 0.0, 0.3, 1.7})
+    for (double v : {-3.0, -0.4, 0.0, 0.8, 2.5, 40.0}) {
+      Vec3d x, xu, xv, n, expect, n_expect;
+      ASSERT_EQ(S.eval(u, v, {x.data(), xu.data(), xv.data(), n.data()}), Status::ok);
+      ASSERT_EQ(parabolic_cyclide_point(c, u, v, expect), Status::ok);
+      EXPECT_LE((x - expect).norm(), 1e-13 * (1 + expect.norm())) << u << " " << v;
+      ASSERT_EQ(parabolic_cyclide_normal(c, u, v, n_expect), Status::ok);
+      EXPECT_NEAR(std::abs(n.dot(n_expect)), 1.0, 1e-12);
+      // x_u, x_v against central differences of (4.1).
+      const double h = 1e-6;
+      Vec3d a1, a2;
+      ASSERT_EQ(parabolic_cyclide_point(c, u + h, v, a1), Status::ok);
+      ASSERT_EQ(parabolic_cyclide_point(c, u - h, v, a2), Status::ok);
+      EXPECT_LE((xu - (a1 - a2) / (2 * h)).norm(), 1e-7 * (1 + xu.norm()));
+      ASSERT_EQ(parabolic_cyclide_point(c, u, v + h, a1), Status::ok);
+      ASSERT_EQ(parabolic_cyclide_point(c, u, v - h, a2), Status::ok);
+      EXPECT_LE((xv - (a1 - a2) / (2 * h)).norm(), 1e-7 * (1 + xv.norm()));
+      // The touching sphere along the u-circle: x = m + rho n.
+      Vec3d m;
+      double r2 = 0;
+      ASSERT_EQ(S.sphere(u, m, r2), Status::ok);
+      EXPECT_NEAR((x - m).norm(), std::sqrt(r2), 1e-12 * (1 + x.norm()));
+      EXPECT_NEAR(std::abs((x - m).normalized().dot(n_expect)), 1.0, 1e-12);
+    }
+  // The circles are the closed-form u-circles.
+  for (double u : {-1.0, 0.5}) {
+    Vec3d centre, normal;
+    double r2;
+    ASSERT_EQ(S.circle(u, centre, normal, r2), Status::ok);
+    Circle3 C;
+    ASSERT_EQ(parabolic_u_circle(c, u, C), Status::ok);
+    EXPECT_LE((centre - C.centre).norm(), 1e-13 * (1 + C.centre.norm()));
+    EXPECT_NEAR(std::abs(normal.dot(C.normal)), 1.0, 1e-13);
+    EXPECT_NEAR(std::sqrt(r2), C.radius, 1e-13 * (1 + C.radius));
+  }
+  // A horn cyclide's u-circle of radius 0, |b - (a - b) u^2| = 0 at
+  // u^2 = b/(a - b): a singular point inside the domain is reported.
+  ParabolicCyclide horn;
+  horn.a = 2;
+  horn.b = 1;  // radius 0 at u = +-1
+  double bad = 0;
+  EXPECT_EQ(make_parabolic_cyclide_surface(horn, 0.5, 1.5, S, &bad), Status::singular_point);
+  EXPECT_NEAR(std::abs(bad), 1.0, 0.1);
+  EXPECT_EQ(make_parabolic_cyclide_surface(horn, 1.2, 3, S), Status::ok);
+  horn.a = horn.b = 0;
+  EXPECT_EQ(make_parabolic_cyclide_surface(horn, 0, 1, S), Status::degenerate_cyclide);
+  EXPECT_EQ(make_parabolic_cyclide_surface(c, 1, 0, S), Status::bad_domain);
 }

@@ -17,7 +17,8 @@ using namespace cyclide;
 static_assert(CYC_SURFACE_PRCS == int(SurfaceKind::prcs) &&
                   CYC_SURFACE_PRRS == int(SurfaceKind::prrs) &&
                   CYC_SURFACE_RINGED == int(SurfaceKind::ringed) &&
-                  CYC_SURFACE_DUPIN == int(SurfaceKind::dupin),
+                  CYC_SURFACE_DUPIN == int(SurfaceKind::dupin) &&
+                  CYC_SURFACE_PARABOLIC == int(SurfaceKind::parabolic),
               "surface kinds");
 CYC_SAME(CYC_OK, ok);
 CYC_SAME(CYC_E_NULL_ARGUMENT, null_argument);
@@ -617,10 +618,10 @@ Outcome read_inversion(const char* fn, const cyc_inversion& in, Inversion& out) 
 }
 
 Line read_line(const cyc_line& l) { return {vec(l.point), vec(l.direction)}; }
-struct Line3 {  // three lines by value (a C array cannot be returned)
+struct ThreeLines {  // three lines by value (a C array cannot be returned)
   Line line[3];
 };
-Line3 read_lines(const cyc_line lines[3]) {
+ThreeLines read_lines(const cyc_line lines[3]) {
   return {{read_line(lines[0]), read_line(lines[1]), read_line(lines[2])}};
 }
 void put_line(cyc_line& out, const Line& L) {
@@ -817,7 +818,7 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
     REQUIRE(lines);
     REQUIRE(base);
     REQUIRE(quadric);
-    const Line3 L = read_lines(lines);
+    const ThreeLines L = read_lines(lines);
     DcmcFamily F;
     if (Status s = dcmc(L.line, F); s != Status::ok) return from_core(fn, s);
     if (normal) put3(normal, F.n);
@@ -1039,7 +1040,7 @@ int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
   return run(ctx, fn, [&] {
     REQUIRE(lines);
     REQUIRE(out);
-    const Line3 L = read_lines(lines);
+    const ThreeLines L = read_lines(lines);
     PrrsLinesAnalysis A;
     if (Status s = prrs_lines_analysis(L.line, A); s != Status::ok) return from_core(fn, s);
     cyc_prrs_lines_analysis R;
@@ -1069,7 +1070,7 @@ int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darbou
   return run(ctx, fn, [&] {
     REQUIRE(lines);
     REQUIRE(out);
-    const Line3 L = read_lines(lines);
+    const ThreeLines L = read_lines(lines);
     Darboux D;
     double r = 0;
     const Status s = prrs_lines_cyclide(L.line, D, &r);

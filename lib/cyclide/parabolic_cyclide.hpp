@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 
 #include "cyclide/bezier_triangle.hpp"
+#include "cyclide/circle_family.hpp"
 #include "cyclide/laguerre.hpp"
 #include "cyclide/status.hpp"
 #include "cyclide/vec.hpp"
@@ -191,6 +192,50 @@ Status cyclide_cubic_triangle(const QuadraticGraphTriangle& tri, RationalCubicTr
 // collinear_points for |det[e1 e2]| <= 1e-14 |e1| |e2|.
 Status cyclide_bicubic_patch(const GraphQuadratic& q, const Vec2d& corner, const Vec2d& e1,
                              const Vec2d& e2, RationalBicubicPatch& out) noexcept;
+
+// ------------------------------------------- as a circle-family surface
+
+// The u-circles of (4.1) as a circle family (circle_family.hpp), generic in
+// the scalar (Taylor series in u): at fixed u, (4.1) is a rational
+// quadratic circle in v through p(u) = phi(u, inf) = ((a - b) u, 0, b) on f
+// and its antipode phi(u, 0) = (a u, 0, a u^2)/(1 + u^2). Its plane
+// x1 + u (x3 - a) = 0 contains e, with normal (1, 0, u), whose length
+// sqrt(1 + u^2) is exactly the half-angle scale of (4.1) in v; so with the
+// axis a(u) = -(1, 0, u) (the sign that turns p towards +x2 for v > 0, as
+// (4.1) does) and f(u, v) = v, eq. (11) of seed 000 reproduces (4.1):
+// x(u, v) = o + (v + a) * (p - o) * (v - a) / |v + a|^2. Everything is
+// rational in u: the family is exact. World coordinates by the
+// cyclide's placement.
+template <class S>
+void parabolic_frame(const ParabolicCyclide& c, const S& u, CircleFrame<S>& F) {
+  const S one(1.0), zero(0.0), half(0.5);
+  const S den = one + u * u;
+  const Vec3<S> p_local(S(c.a - c.b) * u, zero, S(c.b));
+  const Vec3<S> antipode(S(c.a) * u / den, zero, S(c.a) * u * u / den);
+  const Vec3<S> o_local = half * (p_local + antipode);
+  const Vec3<S> a_local(-one, zero, -u);
+  auto place = [&](const Vec3<S>& x, bool is_point) {
+    Vec3<S> w;
+    for (int i = 0; i < 3; ++i) {
+      w[i] = is_point ? S(c.origin[i]) : zero;
+      for (int j = 0; j < 3; ++j) w[i] += S(c.frame(i, j)) * x[j];
+    }
+    return w;
+  };
+  F.o = place(o_local, true);
+  F.p = place(p_local, true);
+  F.a = place(a_local, false);
+  F.alpha = one;
+  F.beta = zero;
+  F.gamma = zero;
+  F.delta = one;
+}
+
+// The sphere touching the cyclide along the u-circle (a Dupin cyclide is a
+// canal surface): the normals along it meet at m = p - rho frame e3 with
+// the signed radius rho = (b + (b - a) u^2)/2 (x = m + rho n, the
+// orientation of parabolic_cyclide_normal). World centre.
+void parabolic_u_sphere(const ParabolicCyclide& c, double u, Vec3d& centre, double& rho) noexcept;
 
 }  // namespace v0
 }  // namespace cyclide

@@ -12,6 +12,7 @@
 #include "cyclide/config.hpp"
 #include "cyclide/curve.hpp"
 #include "cyclide/dupin.hpp"
+#include "cyclide/parabolic_cyclide.hpp"
 #include "cyclide/evaluator.hpp"
 #include "cyclide/prcs.hpp"
 #include "cyclide/prrs.hpp"
@@ -36,6 +37,7 @@ enum class SurfaceKind : int {
   ringed = 3,  // ringed surface (d, n, rho) from its directrix d, orientation
                // n and a curve c on it (seed 001 eq. (3))
   dupin = 4,   // Dupin cyclide (seed 003 §3): the circles are its zeta-lines
+  parabolic = 5,  // parabolic Dupin cyclide (seed 004 (4.1)): its u-circles
 };
 
 class Surface {
@@ -49,6 +51,7 @@ class Surface {
   double tangent_scale = 1.0;  // PRCS: max |p_i'| over the domain samples
   CompiledFrame compiled;      // fast exact frames, verified at creation
   DupinView dupin;             // kind dupin: the cyclide and its parameter maps
+  ParabolicCyclide parabolic;  // kind parabolic: the cyclide (u, v of (4.1))
 
   bool is_canal_by_construction() const { return kind == SurfaceKind::prcs; }
 
@@ -72,6 +75,10 @@ class Surface {
     if (kind == SurfaceKind::dupin) {  // o, a, p and f from the Lie data at once
       const Status st = dupin_frame(dupin, Taylor<double, N>::variable(u), F);
       return st != Status::ok ? st : check_frame(F);
+    }
+    if (kind == SurfaceKind::parabolic) {  // closed form, rational in u
+      parabolic_frame(parabolic, Taylor<double, N>::variable(u), F);
+      return check_frame(F);
     }
     if (!compiled.eval<N>(u, F.o, F.a, F.p)) {
       const Status st = numeric_frame<N>(u, F);
@@ -110,6 +117,9 @@ class Surface {
       case SurfaceKind::prrs: return prrs_frame<N>(curve[0], curve[1], curve[2], u, F);
       case SurfaceKind::ringed: return ringed_frame<N>(curve[0], curve[1], curve[2], u, F);
       case SurfaceKind::dupin: return dupin_frame(dupin, Taylor<double, N>::variable(u), F);
+      case SurfaceKind::parabolic:
+        parabolic_frame(parabolic, Taylor<double, N>::variable(u), F);
+        return Status::ok;
     }
     return Status::internal_error;
   }
@@ -177,6 +187,13 @@ Status make_ringed(const RationalCurve& d, const RationalCurve& n, const Rationa
 // shrunk to a point (singular_point) at a sample is reported with *bad_u.
 Status make_dupin_surface(const DupinView& view, double u0, double u1, Surface& out,
                           double* bad_u = nullptr);
+// A parabolic Dupin cyclide (seed 004 §4.1) as a circle-family surface over
+// u in [u0, u1]: the u-circles of (4.1), v the parameter of (4.1)
+// (parabolic_frame). Statuses of validate_parabolic_cyclide; a circle of
+// radius 0 (a singular point of a horn cyclide) at a domain sample is
+// singular_point with *bad_u.
+Status make_parabolic_cyclide_surface(const ParabolicCyclide& c, double u0, double u1,
+                                      Surface& out, double* bad_u = nullptr);
 // Mobius coefficients from power-form coefficient arrays of length degree+1.
 Status make_mobius(int degree, const double* alpha, const double* beta,
                    const double* gamma, const double* delta, Mobius& out);

@@ -445,5 +445,11 @@ Status cyclide_bicubic_patch(const GraphQuadratic& q, const Vec2d& corner, const
   return Status::ok;
 }
 
+void parabolic_u_sphere(const ParabolicCyclide& c, double u, Vec3d& centre, double& rho) noexcept {
+  rho = 0.5 * (c.b + (c.b - c.a) * u * u);
+  const Vec3d m_local((c.a - c.b) * u, 0.0, c.b - rho);
+  centre = c.origin + c.frame * m_local;
+}
+
 }  // namespace v0
 }  // namespace cyclide

@@ -246,6 +246,13 @@ Status Surface::sphere(double u, Vec3d& center, double& radius2) const {
     radius2 = s.rho * s.rho;
     return Status::ok;
   }
+  if (kind == SurfaceKind::parabolic) {  // the sphere touching along the u-circle
+    if (!input_ok(u)) return Status::not_finite;
+    double rho = 0;
+    parabolic_u_sphere(parabolic, u, center, rho);
+    radius2 = rho * rho;
+    return Status::ok;
+  }
   if (!is_canal_by_construction()) return Status::not_canal;
   if (!input_ok(u)) return Status::not_finite;
   CircleFrame<Taylor<double, 0>> F;
@@ -359,6 +366,7 @@ void compile_frames(Surface& S) {
       st = exact_ringed_frame(S.curve[0], S.curve[1], S.curve[2], E, C.mid, half);
       break;
     case SurfaceKind::dupin: return;  // frames straight from the Lie data
+    case SurfaceKind::parabolic: return;  // frames in closed form
   }
   if (st != Status::ok) return;
   const ExactVec3* src[3] = {&E.o, &E.a, &E.p};
@@ -540,6 +548,21 @@ Status make_dupin_surface(const DupinView& view, double u0, double u1, Surface& 
   S.kind = SurfaceKind::dupin;
   S.dupin = view;
   S.f_constant = false;
+  S.u0 = u0;
+  S.u1 = u1;
+  if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;
+  out = S;
+  return Status::ok;
+}
+
+Status make_parabolic_cyclide_surface(const ParabolicCyclide& c, double u0, double u1,
+                                      Surface& out, double* bad_u) {
+  if (Status st = check_domain(u0, u1); st != Status::ok) return st;
+  if (Status st = validate_parabolic_cyclide(c); st != Status::ok) return st;
+  Surface S;
+  S.kind = SurfaceKind::parabolic;
+  S.parabolic = c;
+  S.f_constant = true;  // f = v
   S.u0 = u0;
   S.u1 = u1;
   if (Status st = scan_domain(S, bad_u); st != Status::ok) return st;

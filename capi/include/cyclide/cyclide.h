@@ -169,6 +169,7 @@ CYC_API int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, i
 #define CYC_SURFACE_PRRS 2 /* ringed surface by PRRS (seed 000 eq. 24-27) */
 #define CYC_SURFACE_RINGED 3 /* ringed surface (d, n, rho) through a curve c (seed 001 eq. 3) */
 #define CYC_SURFACE_DUPIN 4 /* Dupin cyclide from Lie sphere geometry (seed 003, cyc_dupin_surface_create) */
+#define CYC_SURFACE_PARABOLIC 5 /* parabolic Dupin cyclide, its u-circles of (4.1) (seed 004) */
 
 /** PRCS: the canal surface through p1 and p2 (either may be a line element;
  *  not a point), x(u,v) of eq. (11) with circle parameter f (NULL: f = v),
