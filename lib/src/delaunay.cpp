@@ -380,6 +380,10 @@ struct Mesh {
     if (nb_edges != m + 2) return false;  // not a disk: impossible with exact predicates
     for (int e = 0; e < nb_edges; ++e) {
       const int s = e < m ? cavity[e] : count++;
+      // A new slot's mark is whatever the caller's workspace held: clear it,
+      // or a stale value equal to a later stamp hides the triangle from the
+      // cavity search (a reused workspace gave internal_error).
+      if (e >= m) mark[s] = 0;
       const int u = boundary[3 * e], w = boundary[3 * e + 1], o = boundary[3 * e + 2];
       v[3 * s] = u;
       v[3 * s + 1] = w;

@@ -1916,6 +1916,284 @@ CYC_API int cyc_optimize_cyclide_blend_parameters(cyc_context* ctx, const cyc_li
                                                   cyc_free_parameter* params, int capacity,
                                                   int* count);
 
+/* ======================================================================
+ * Seed 004: Laguerre geometry, PN surfaces, parabolic Dupin cyclides, design
+ * (Peternell-Pottmann, SPEC.md §8i). Plain values, allocation-free unless
+ * stated; every output is written only on CYC_OK; NaN, Inf or |x| > 1e100
+ * in an input gives CYC_E_NOT_FINITE.
+ * ====================================================================== */
+
+/** An oriented plane e0 + e.x = 0 with unit normal e (seed 004 §2). */
+typedef struct cyc_oriented_plane {
+  double e0;
+  double e[3];
+} cyc_oriented_plane;
+
+/** A cycle: the oriented sphere (m, r), or the point m (r = 0). It touches
+ *  a plane iff e0 + e.m + r = 0. */
+typedef struct cyc_cycle {
+  double m[3];
+  double r;
+} cyc_cycle;
+
+/** A point of the isotropic model I^3 = R^3 u R: y (exceptional = 0), or
+ *  the real number c of the plane (c, 0, 0, 1) (exceptional = 1). */
+typedef struct cyc_isotropic_point {
+  int exceptional;
+  double y[3];
+  double c;
+} cyc_isotropic_point;
+
+/** The paraboloid (2.4) of a cycle: 2 y3 + k (y1^2 + y2^2) + 2 (l1 y1 +
+ *  l2 y2) + c0 = 0 (k = r + m3, l = (m1, m2), c0 = r - m3). */
+typedef struct cyc_isotropic_paraboloid {
+  double k, l1, l2, c0;
+} cyc_isotropic_paraboloid;
+
+/** A point with its unit normal (a datum of the design, §4.2). */
+typedef struct cyc_oriented_point {
+  double point[3];
+  double normal[3];
+} cyc_oriented_point;
+
+/** A datum in the isotropic model: B = (b, z) and the gradient g of the
+ *  tangent plane of Lambda(A) at B. */
+typedef struct cyc_isotropic_datum {
+  double b[2];
+  double z;
+  double g[2];
+} cyc_isotropic_datum;
+
+/** A quadratic q = q[0] y1^2 + q[1] y1 y2 + q[2] y2^2 + q[3] y1 + q[4] y2 +
+ *  q[5]: the graph y3 = q / 2 of I^3 (order q20, q11, q02, q10, q01, q00). */
+typedef struct cyc_graph_quadratic {
+  double q[6];
+} cyc_graph_quadratic;
+
+/** A quadratic Bezier triangle graph over the triangle vertex[0..2]; the
+ *  ordinates in the order 200, 110, 101, 020, 011, 002. */
+typedef struct cyc_quadratic_graph_triangle {
+  double vertex[3][2];
+  double ordinate[6];
+} cyc_quadratic_graph_triangle;
+
+/** A rational cubic Bezier triangle, homogeneous control points (w, w x,
+ *  w y, w z) in the order 300, 210, 201, 120, 111, 102, 030, 021, 012, 003. */
+typedef struct cyc_rational_cubic_triangle {
+  double control[10][4];
+} cyc_rational_cubic_triangle;
+
+/** A rational bicubic patch, control[i][j] = (w, w x, w y, w z), i along s. */
+typedef struct cyc_rational_bicubic_patch {
+  double control[4][4][4];
+} cyc_rational_bicubic_patch;
+
+/** A parabolic Dupin cyclide: the normal form (4.1)-(4.3) with parameters
+ *  (a, b), placed by x = origin + frame x_local (frame column-major, its
+ *  columns the local axes, a rotation to 1e-12). */
+typedef struct cyc_parabolic_cyclide {
+  double a, b;
+  double frame[9];
+  double origin[3];
+} cyc_parabolic_cyclide;
+
+/** Types of a parabolic cyclide (§4.1, ERRATA 004 for the sphere). */
+enum cyc_parabolic_cyclide_type {
+  CYC_PARABOLIC_HORN = 0,   /* a b > 0, a != b */
+  CYC_PARABOLIC_RING = 1,   /* a b < 0 */
+  CYC_PARABOLIC_THORN = 2,  /* exactly one of a, b is 0 */
+  CYC_PARABOLIC_SPHERE = 3, /* a = b != 0 */
+  CYC_PARABOLIC_POINT = 4   /* a = b = 0 */
+};
+
+/** The cone of revolution Gamma(lambda, mu) of Thm. 4.2. */
+typedef struct cyc_revolution_cone {
+  double apex[3]; /* when !cylinder */
+  double axis[3]; /* unit */
+  double half_angle;
+  int cylinder;        /* mu = 0: the apex is at infinity */
+  int circle_and_line; /* lambda = 0: Gamma also touches along the line e */
+} cyc_revolution_cone;
+
+/** Options of the design (zero-initialize for the defaults). */
+typedef struct cyc_design_options {
+  int allow_ridges; /* nonzero: return folding patchworks (Fig. 3) too */
+} cyc_design_options;
+
+/** What the design found (see cyclide_design.hpp): written on success and
+ *  on every error after the arguments were read (fields that do not apply
+ *  keep their neutral values 0 / -1). */
+typedef struct cyc_design_report {
+  int triangles;
+  int patches;
+  int orientation;
+  int ridge_patches;
+  int first_ridge_patch;
+  int first_bad_datum;
+  int patches_needed;
+  size_t work_needed; /* bytes */
+} cyc_design_report;
+
+/* ---- Laguerre geometry and the isotropic model (§2) */
+
+/** Lambda (2.3): the plane (normalized first) as a point of I^3.
+ *  CYC_E_INVALID_ARGUMENT for e = 0, CYC_E_NUMERICAL_OVERFLOW for a normal
+ *  within ~1e-154 of W = (0, 0, 1). */
+CYC_API int cyc_laguerre_to_isotropic(cyc_context* ctx, const cyc_oriented_plane* plane,
+                                      cyc_isotropic_point* out);
+/** Lambda^{-1}: the unit plane of an isotropic point (exceptional must be 0
+ *  or 1, else CYC_E_INVALID_ARGUMENT). */
+CYC_API int cyc_isotropic_to_laguerre(cyc_context* ctx, const cyc_isotropic_point* y,
+                                      cyc_oriented_plane* out);
+/** The paraboloid (2.4) of a cycle. */
+CYC_API int cyc_cycle_paraboloid(cyc_context* ctx, const cyc_cycle* cycle,
+                                 cyc_isotropic_paraboloid* out);
+/** *out = 1 iff y lies on the paraboloid to tol (relative to the terms'
+ *  scale; tol in [0, 1), 0 means the default 1e-12), else 0. */
+CYC_API int cyc_paraboloid_contains(cyc_context* ctx, const cyc_isotropic_paraboloid* p,
+                                    const cyc_isotropic_point* y, double tol, int* out);
+/** The translation x -> x + t in I^3 (2.5) and on planes (e0 -> e0 - e.t). */
+CYC_API int cyc_isotropic_translate(cyc_context* ctx, const cyc_isotropic_point* y,
+                                    const double t[3], cyc_isotropic_point* out);
+CYC_API int cyc_plane_translate(cyc_context* ctx, const cyc_oriented_plane* p, const double t[3],
+                                cyc_oriented_plane* out);
+/** The dilatation adding d to all radii (offset s + d n): (2.6) with the
+ *  sign y3 -> y3 - (d/2)(1 + y1^2 + y2^2), planes e0 -> e0 - d. */
+CYC_API int cyc_isotropic_dilatation(cyc_context* ctx, const cyc_isotropic_point* y, double d,
+                                     cyc_isotropic_point* out);
+CYC_API int cyc_plane_dilatation(cyc_context* ctx, const cyc_oriented_plane* p, double d,
+                                 cyc_oriented_plane* out);
+
+/* ---- parabolic Dupin cyclides (§4.1) */
+
+/** Thm 4.1: Lambda^{-1} of the graph y3 = q / 2. CYC_E_DEGENERATE_CYCLIDE
+ *  when a = b = 0 (a point). */
+CYC_API int cyc_parabolic_cyclide_from_quadratic(cyc_context* ctx, const cyc_graph_quadratic* q,
+                                                 cyc_parabolic_cyclide* out);
+/** The quadratic of a cyclide of the family G (frame a rotation about x3). */
+CYC_API int cyc_parabolic_cyclide_quadratic(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                            cyc_graph_quadratic* out);
+/** The world point phi(u, v) (4.1) and unit normal (4.3) (either output may
+ *  be NULL, not both). Cyclide statuses: CYC_E_NOT_FINITE, CYC_E_INVALID_ARGUMENT
+ *  (frame not a rotation), CYC_E_DEGENERATE_CYCLIDE (a = b = 0). */
+CYC_API int cyc_parabolic_cyclide_eval(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                       double u, double v, double point[3], double normal[3]);
+/** (4.2) at a world point. */
+CYC_API int cyc_parabolic_cyclide_implicit(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                           const double x[3], double* out);
+/** enum cyc_parabolic_cyclide_type of (a, b) (any finite a, b). */
+CYC_API int cyc_parabolic_cyclide_type(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                       int* out);
+/** The parabolic lines e (x1 = 0, x3 = a) and f (x2 = 0, x3 = b), world
+ *  (either may be NULL). */
+CYC_API int cyc_parabolic_cyclide_lines(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                        cyc_line* e, cyc_line* f);
+/** The parameter circles u = const / v = const (radius2 = radius^2). */
+CYC_API int cyc_parabolic_cyclide_u_circle(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                           double u, cyc_circle* out);
+CYC_API int cyc_parabolic_cyclide_v_circle(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                           double v, cyc_circle* out);
+/** Thm 4.2: the cone Gamma(lambda, mu) touching along the cubic circle
+ *  phi(t, lambda t + mu). CYC_E_DEPENDENT_PLANES when mu = 0 and a + b
+ *  lambda^2 = 0 (a pencil of planes). */
+CYC_API int cyc_parabolic_cyclide_cone(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                       double lambda, double mu, cyc_revolution_cone* out);
+/** The cubic circle's point phi(t, lambda t + mu), world. */
+CYC_API int cyc_parabolic_cyclide_cubic_circle_point(cyc_context* ctx,
+                                                     const cyc_parabolic_cyclide* c,
+                                                     double lambda, double mu, double t,
+                                                     double x[3]);
+/** Remark 4.2: the net line of x (meeting e and f) cut with x3 = cc
+ *  (local); CYC_E_INVALID_ARGUMENT for a sphere, CYC_E_POINT_AT_INFINITY for
+ *  x in a plane x3 = a or x3 = b. */
+CYC_API int cyc_parabolic_cyclide_net_projection(cyc_context* ctx,
+                                                 const cyc_parabolic_cyclide* c,
+                                                 const double x[3], double cc, double out[2]);
+/** (u, v) with phi(u, v) = x (statuses as the net projection, except that a
+ *  sphere uses its stereographic parameter). */
+CYC_API int cyc_parabolic_cyclide_parameter_of(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                               const double x[3], double uv[2]);
+
+/* ---- patches (§4.1) */
+
+/** Lambda^{-1} of a quadratic graph triangle: the exact rational cubic
+ *  triangle on its cyclide. CYC_E_COLLINEAR_POINTS for a degenerate domain. */
+CYC_API int cyc_cyclide_cubic_triangle(cyc_context* ctx, const cyc_quadratic_graph_triangle* tri,
+                                       cyc_rational_cubic_triangle* out);
+/** The same over the parallelogram corner + s e1 + t e2 of the graph
+ *  y3 = q / 2, as a rational bicubic. CYC_E_COLLINEAR_POINTS for e1 || e2. */
+CYC_API int cyc_cyclide_bicubic_patch(cyc_context* ctx, const cyc_graph_quadratic* q,
+                                      const double corner[2], const double e1[2],
+                                      const double e2[2], cyc_rational_bicubic_patch* out);
+/** The triangle at barycentrics (r, s, t), the patch at (s, t) (any real
+ *  parameters). CYC_E_POINT_AT_INFINITY where the weight vanishes. */
+CYC_API int cyc_cubic_triangle_eval(cyc_context* ctx, const cyc_rational_cubic_triangle* T,
+                                    double r, double s, double t, double x[3]);
+CYC_API int cyc_bicubic_patch_eval(cyc_context* ctx, const cyc_rational_bicubic_patch* P,
+                                   double s, double t, double x[3]);
+
+/* ---- Delaunay triangulation and Powell-Sabin interpolation (§4.2) */
+
+/** Bytes of workspace cyc_delaunay_triangulate needs for n points (0 for
+ *  n < 3 or n > 50,000,000), and the bound 2n - 5 on its triangles. */
+CYC_API size_t cyc_delaunay_workspace_size(int n);
+CYC_API int cyc_delaunay_max_triangles(int n);
+/** The Delaunay triangulation of the points (pts[2i], pts[2i+1]) as
+ *  counter-clockwise index triples tri[3k..3k+2], k < *ntri.
+ *  CYC_E_INVALID_ARGUMENT (n out of range, two equal points),
+ *  CYC_E_COLLINEAR_POINTS, CYC_E_BUFFER_TOO_SMALL (work_bytes below the
+ *  size, or tri_cap below the count: *ntri then receives the count). */
+CYC_API int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* work,
+                                     size_t work_bytes, int* tri, int tri_cap, int* ntri);
+/** Bytes of workspace cyc_powell_sabin_interpolate needs. */
+CYC_API size_t cyc_powell_sabin_workspace_size(int n, int ntri);
+/** The Powell-Sabin C1 quadratic interpolant of values z[i] and gradients
+ *  (g[2i], g[2i+1]) at the points (b[2i], b[2i+1]) over tri (3 ntri
+ *  indices, counter-clockwise): 6 ntri graph triangles (6t + 2k: V_k R_k Z,
+ *  6t + 2k + 1: R_k V_k+1 Z). CYC_E_BUFFER_TOO_SMALL with *nout = 6 ntri. */
+CYC_API int cyc_powell_sabin_interpolate(cyc_context* ctx, const double* b, const double* z,
+                                         const double* g, int n, const int* tri, int ntri,
+                                         void* work, size_t work_bytes,
+                                         cyc_quadratic_graph_triangle* out, int out_cap,
+                                         int* nout);
+
+/* ---- the design (§4.2) */
+
+/** (A, alpha) -> (B, beta) and back. CYC_E_POLE_IN_GAUSS_IMAGE for a normal
+ *  at W = (0, 0, 1), CYC_E_INVALID_ARGUMENT for a zero normal. */
+CYC_API int cyc_isotropic_datum_of(cyc_context* ctx, const cyc_oriented_point* a,
+                                   cyc_isotropic_datum* out);
+CYC_API int cyc_oriented_point_of(cyc_context* ctx, const cyc_isotropic_datum* d,
+                                  cyc_oriented_point* out);
+/** *out = 1 iff the data's Gauss image contains W (see cyclide_design.hpp). */
+CYC_API int cyc_gauss_image_contains_pole(cyc_context* ctx, const cyc_oriented_point* data,
+                                          int n, int* out);
+/** Bytes of caller workspace for cyc_design_cyclide_surface (ntri = 0: the
+ *  Delaunay triangulation is computed); 0 for n < 3. */
+CYC_API size_t cyc_design_workspace_size(int n, int ntri);
+/** Upper bound on the patch count: 6 (2n - 5), or 6 ntri. */
+CYC_API int cyc_design_max_patches(int n, int ntri);
+/** Seed 004 §4.2: the G1 patchwork of parabolic cyclide cubic triangles
+ *  interpolating the oriented points data[0..n). tri = NULL (ntri = 0):
+ *  the Delaunay triangulation of the isotropic projections b_i; else 3 ntri
+ *  counter-clockwise indices. options NULL: defaults. work = NULL: the
+ *  workspace is taken from the context's allocator (setup tier) and
+ *  released before returning; else work_bytes >= cyc_design_workspace_size
+ *  and nothing is allocated. iso (may be NULL) and patches receive
+ *  *npatches = 6 ntri entries. report may be NULL. Statuses:
+ *  CYC_E_NULL_ARGUMENT, CYC_E_INVALID_ARGUMENT (n < 3, bad triangulation,
+ *  two data with the same b_i), CYC_E_NOT_FINITE, CYC_E_POLE_IN_GAUSS_IMAGE,
+ *  CYC_E_NUMERICAL_OVERFLOW (report->first_bad_datum),
+ *  CYC_E_COLLINEAR_POINTS, CYC_E_BUFFER_TOO_SMALL (report->work_needed,
+ *  report->patches_needed; *npatches = the count when only cap is short),
+ *  CYC_E_RIDGE (unless allow_ridges), CYC_E_OUT_OF_MEMORY. */
+CYC_API int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data, int n,
+                                       const int* tri, int ntri,
+                                       const cyc_design_options* options, void* work,
+                                       size_t work_bytes, cyc_quadratic_graph_triangle* iso,
+                                       cyc_rational_cubic_triangle* patches, int cap,
+                                       int* npatches, cyc_design_report* report);
+
 #ifdef __cplusplus
 }
 #endif
