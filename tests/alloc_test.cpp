@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <vector>
 
@@ -853,6 +854,76 @@ TEST(AllocFreeLie, CyclideBlends) {
     bad += cyclide_blend_continuity(Rc, Sc, Bc, 8, Cc) != Status::ok;
   });
   EXPECT_EQ(bad, 0);
+  EXPECT_EQ(heap.allocations, 0);
+  EXPECT_EQ(heap.frees, 0);
+  cyc_context_destroy(ctx);
+}
+
+// Seed 004 through the C ABI: Lambda / Lambda^{-1}, the parabolic cyclide's
+// evaluators, cubic triangle / bicubic construction and evaluation, and the
+// design with a caller workspace allocate nothing (SPEC §2 tier table).
+TEST(AllocFreeLaguerre, EvaluatorsPatchesAndDesign) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  // Design data: the lower cap of the ellipsoid (2, 1.5, 1), 6 x 6 normals.
+  std::vector<cyc_oriented_point> data;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      const double y1 = -0.6 + 1.2 * (i + 0.5) / 6, y2 = -0.6 + 1.2 * (j + 0.5) / 6;
+      const double N = 1 + y1 * y1 + y2 * y2;
+      const double a[3] = {2 * y1 / N, 2 * y2 / N, (y1 * y1 + y2 * y2 - 1) / N};
+      const double D[3] = {4, 2.25, 1};
+      const double s = std::sqrt(D[0] * a[0] * a[0] + D[1] * a[1] * a[1] + D[2] * a[2] * a[2]);
+      cyc_oriented_point A;
+      for (int c = 0; c < 3; ++c) A.normal[c] = a[c], A.point[c] = D[c] * a[c] / s;
+      data.push_back(A);
+    }
+  const int n = int(data.size());
+  std::vector<unsigned char> work(cyc_design_workspace_size(n, 0));
+  const int cap = cyc_design_max_patches(n, 0);
+  std::vector<cyc_rational_cubic_triangle> patches(cap);
+  std::vector<cyc_quadratic_graph_triangle> iso(cap);
+  std::vector<unsigned char> dwork(cyc_delaunay_workspace_size(n));
+  std::vector<int> tri(3 * cyc_delaunay_max_triangles(n));
+  std::vector<double> pts(2 * n);
+  for (int i = 0; i < 2 * n; ++i) pts[i] = std::sin(1.3 * i) + 0.1 * i;
+  cyc_parabolic_cyclide c;
+  std::memset(&c, 0, sizeof c);
+  c.a = 1.5, c.b = -0.5;
+  c.frame[0] = c.frame[4] = c.frame[8] = 1;
+  const cyc_graph_quadratic q{{-1.0, 0.2, 0.5, 0.4, -0.2, 0.3}};
+  cyc_quadratic_graph_triangle gt{{{-0.5, -0.4}, {0.7, -0.1}, {0.1, 0.8}}, {0.1, 0.2, 0.3, 0.1, 0.0, -0.2}};
+  const double corner[2] = {-0.3, -0.2}, e1[2] = {0.6, 0.1}, e2[2] = {-0.1, 0.5};
+  int bad = 0, np = 0, nt = 0;
+  const Heap heap = measure([&] {
+    for (int r = 0; r < 3; ++r) {
+      cyc_oriented_plane p{0.5 * r, {0.36, -0.48, 0.8}}, back;
+      cyc_isotropic_point y;
+      bad += cyc_laguerre_to_isotropic(ctx, &p, &y) != CYC_OK;
+      bad += cyc_isotropic_to_laguerre(ctx, &y, &back) != CYC_OK;
+      double x[3], nrm[3], F, uv[2];
+      bad += cyc_parabolic_cyclide_eval(ctx, &c, 0.3 * r, -0.2, x, nrm) != CYC_OK;
+      bad += cyc_parabolic_cyclide_implicit(ctx, &c, x, &F) != CYC_OK;
+      bad += cyc_parabolic_cyclide_parameter_of(ctx, &c, x, uv) != CYC_OK;
+      bad += cyc_parabolic_cyclide_eval(ctx, &c, NAN, 0, x, nrm) != CYC_E_NOT_FINITE;
+      cyc_rational_cubic_triangle T;
+      cyc_rational_bicubic_patch B;
+      bad += cyc_cyclide_cubic_triangle(ctx, &gt, &T) != CYC_OK;
+      bad += cyc_cubic_triangle_eval(ctx, &T, 0.2, 0.3, 0.5, x) != CYC_OK;
+      bad += cyc_cyclide_bicubic_patch(ctx, &q, corner, e1, e2, &B) != CYC_OK;
+      bad += cyc_bicubic_patch_eval(ctx, &B, 0.4, 0.7, x) != CYC_OK;
+      bad += cyc_delaunay_triangulate(ctx, pts.data(), n, dwork.data(), dwork.size(), tri.data(),
+                                      int(tri.size() / 3), &nt) != CYC_OK;
+      bad += cyc_design_cyclide_surface(ctx, data.data(), n, nullptr, 0, nullptr, work.data(),
+                                        work.size(), iso.data(), patches.data(), cap, &np,
+                                        nullptr) != CYC_OK;
+      bad += cyc_design_cyclide_surface(ctx, data.data(), n, nullptr, 0, nullptr, work.data(),
+                                        work.size() - 1, iso.data(), patches.data(), cap, &np,
+                                        nullptr) != CYC_E_BUFFER_TOO_SMALL;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(np, 0);
   EXPECT_EQ(heap.allocations, 0);
   EXPECT_EQ(heap.frees, 0);
   cyc_context_destroy(ctx);
