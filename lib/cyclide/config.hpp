@@ -48,8 +48,9 @@ constexpr int kMaxPnDegree = 8;
 // plane and its partials count as dependent (Phi developable, Thm. 3.2).
 constexpr double kPnDevelopableTol = 1e-10;
 
-// Relative size of X0 (= -4 N det of the Jacobian of (y1, y2)) below which
-// Psi counts as touched by an isotropic line (point of Phi at infinity).
+// Relative size of X0 below which
+// Psi counts as touched by an isotropic line (point of Phi at infinity);
+// X0 = 4 N det J, J the Jacobian of (u, v) -> (y1, y2).
 constexpr double kPnAtInfinityTol = 1e-10;
 
 // A control net whose extent (in y, or in (y1, y2)) is below this times

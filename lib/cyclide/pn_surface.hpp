@@ -23,7 +23,7 @@
 //   * X = 0: the plane and its two partials are dependent; Psi is locally a
 //     curve (or its parameterization is singular) and Phi has no envelope
 //     point: developable.
-//   * X0 = 0, X != 0: X0 = -4 N det J with J the Jacobian of
+//   * X0 = 0, X != 0: X0 = 4 N det J with J the Jacobian of
 //     (u, v) -> (y1, y2), so Psi is touched by an isotropic line there
 //     (y3-parallel occluding contour, seed 004 §3) and the point of Phi lies
 //     at infinity: point_at_infinity.
