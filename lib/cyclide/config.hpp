@@ -40,5 +40,23 @@ constexpr double kMaxInputMagnitude = 1e100;
 constexpr double kMaxFrameMagnitude = 1e30;
 constexpr double kMinAxisLength = 1e-30;
 
+// Seed 004 §3 (pn_surface.hpp): largest bidegree of a rational Bezier
+// surface Psi of the isotropic model (fixed-capacity control net).
+constexpr int kMaxPnDegree = 8;
+
+// Relative size of the exterior product X = P ^ P_u ^ P_v below which the
+// plane and its partials count as dependent (Phi developable, Thm. 3.2).
+constexpr double kPnDevelopableTol = 1e-10;
+
+// Relative size of X0 below which
+// Psi counts as touched by an isotropic line (point of Phi at infinity);
+// X0 = 4 N det J, J the Jacobian of (u, v) -> (y1, y2).
+constexpr double kPnAtInfinityTol = 1e-10;
+
+// A control net whose extent (in y, or in (y1, y2)) is below this times
+// (1 + its largest coordinate) is a point (or an isotropic line): no
+// envelope (developable everywhere).
+constexpr double kPnMinExtent = 1e-9;
+
 }  // namespace v0
 }  // namespace cyclide
