@@ -18,6 +18,7 @@
 #include "cyclide/delaunay.hpp"
 #include "cyclide/laguerre.hpp"
 #include "cyclide/parabolic_cyclide.hpp"
+#include "cyclide/pn_surface.hpp"
 #include "cyclide/powell_sabin.hpp"
 
 using namespace cyclide;
@@ -35,8 +36,15 @@ static_assert(sizeof(OrientedPoint) == sizeof(cyc_oriented_point) &&
                   alignof(OrientedPoint) == alignof(cyc_oriented_point) &&
                   offsetof(cyc_oriented_point, normal) == 3 * sizeof(double),
               "cyc_oriented_point layout");
+static_assert(CYC_MAX_PN_DEGREE == kMaxPnDegree, "PN degree bound");
 static_assert(sizeof(Vec3d) == 3 * sizeof(double) && alignof(Vec3d) == alignof(double),
               "Vec3d layout");
+
+// The PN surface handle: Psi with its reference scales (pn_surface.hpp).
+struct cyc_pn_surface {
+  cyc_allocator allocator;
+  PnSurface surface;
+};
 
 namespace {
 
@@ -401,6 +409,112 @@ int cyc_plane_dilatation(cyc_context* ctx, const cyc_oriented_plane* p, double d
     if (Outcome r = plane_checked(fn, "p", *p, P); r.status) return r;
     if (Outcome r = scalar_in(fn, "d", d); r.status) return r;
     return plane_out(fn, dilatation(P, d), out);
+  });
+}
+
+// ------------------------------------------------------------ PN surfaces (§3)
+
+int cyc_pn_surface_create(cyc_context* ctx, int degree_u, int degree_v, const double* control,
+                          cyc_pn_surface** out) {
+  const char* fn = "cyc_pn_surface_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(control);
+    REQUIRE(out);
+    if (degree_u < 0 || degree_v < 0)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: degrees (%d, %d) must be >= 0", fn, degree_u,
+                  degree_v);
+    if (degree_u > kMaxPnDegree || degree_v > kMaxPnDegree)
+      return fail(CYC_E_DEGREE_TOO_HIGH, "%s: degrees (%d, %d) exceed %d", fn, degree_u,
+                  degree_v, kMaxPnDegree);
+    const int count = (degree_u + 1) * (degree_v + 1);
+    if (Outcome r = finite_in(fn, "control", control, 4 * count); r.status) return r;
+    Vec4d P[(kMaxPnDegree + 1) * (kMaxPnDegree + 1)];
+    for (int k = 0; k < count; ++k)
+      P[k] = Vec4d(control[4 * k], control[4 * k + 1], control[4 * k + 2], control[4 * k + 3]);
+    PnSurface S;
+    const Status s = make_pn_surface(P, degree_u, degree_v, S);
+    if (s == Status::invalid_argument)
+      return fail(int(s), "%s: a control weight is <= 0", fn);
+    if (s == Status::not_finite)
+      return fail(int(s), "%s: an affine control point w y / w is beyond 1e100", fn);
+    if (s != Status::ok) return from_core(fn, s);
+    cyc_pn_surface* h = allocate<cyc_pn_surface>(ctx->allocator);
+    if (!h) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+    h->surface = S;
+    *out = h;
+    return ok();
+  });
+}
+
+void cyc_pn_surface_destroy(cyc_pn_surface* surface) { release(surface); }
+
+static Outcome pn_failure(const char* fn, Status s, double u, double v) {
+  switch (s) {
+    case Status::bad_domain:
+      return fail(int(s), "%s: (u, v) = (%.17g, %.17g) is outside [0, 1]^2", fn, u, v);
+    case Status::developable:
+    case Status::point_at_infinity:
+    case Status::numerical_overflow:
+      return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
+    default: return from_core(fn, s);
+  }
+}
+
+int cyc_pn_surface_eval(cyc_context* ctx, const cyc_pn_surface* surface, double u, double v,
+                        double d, cyc_pn_point* out) {
+  const char* fn = "cyc_pn_surface_eval";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(out);
+    PnPoint P;
+    if (Status s = pn_surface_eval(surface->surface, u, v, d, P); s != Status::ok)
+      return pn_failure(fn, s, u, v);
+    cyc_pn_point p;
+    put3(p.point, P.x);
+    put3(p.x_u, P.x_u);
+    put3(p.x_v, P.x_v);
+    put3(p.normal, P.n);
+    p.plane = c_plane_of(P.plane);
+    put3(p.y, P.y);
+    *out = p;
+    return ok();
+  });
+}
+
+int cyc_pn_surface_eval_grid(cyc_context* ctx, const cyc_pn_surface* surface, const double* us,
+                             size_t nu, const double* vs, size_t nv, double d,
+                             cyc_buffer3 points, cyc_buffer3 normals, size_t* failed) {
+  const char* fn = "cyc_pn_surface_eval_grid";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    if (nu) REQUIRE(us);
+    if (nv) REQUIRE(vs);
+    if (nv && nu > SIZE_MAX / nv) return fail(CYC_E_INVALID_ARGUMENT, "%s: nu*nv overflows", fn);
+    const size_t count = nu * nv;
+    if (Outcome o = check_buffer(fn, "points", points, count); o.status) return o;
+    if (Outcome o = check_buffer(fn, "normals", normals, count); o.status) return o;
+    if (Outcome r = scalar_in(fn, "d", d); r.status) return r;
+    // Every parameter first: nothing is written unless the call is valid.
+    for (size_t i = 0; i < nu; ++i)
+      if (!(us[i] >= 0 && us[i] <= 1))
+        return fail(std::isnan(us[i]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
+                    "%s: us[%zu] = %.17g is outside [0, 1]", fn, i, us[i]);
+    for (size_t j = 0; j < nv; ++j)
+      if (!(vs[j] >= 0 && vs[j] <= 1))
+        return fail(std::isnan(vs[j]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
+                    "%s: vs[%zu] = %.17g is outside [0, 1]", fn, j, vs[j]);
+    size_t bad_points = 0;
+    PnPoint P;
+    for (size_t i = 0; i < nu; ++i)
+      for (size_t j = 0; j < nv; ++j) {
+        const size_t k = i * nv + j;
+        const bool good = pn_surface_eval(surface->surface, us[i], vs[j], d, P) == Status::ok;
+        bad_points += !good;
+        if (points.data) put3(points.data + k * points.stride, good ? P.x : Vec3d::Zero());
+        if (normals.data) put3(normals.data + k * normals.stride, good ? P.n : Vec3d::Zero());
+      }
+    if (failed) *failed = bad_points;
+    return ok();
   });
 }
 

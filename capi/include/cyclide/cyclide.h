@@ -2064,6 +2064,54 @@ CYC_API int cyc_isotropic_dilatation(cyc_context* ctx, const cyc_isotropic_point
 CYC_API int cyc_plane_dilatation(cyc_context* ctx, const cyc_oriented_plane* p, double d,
                                  cyc_oriented_plane* out);
 
+/* ---- PN surfaces Lambda^{-1}(Psi) (§3, Thm. 3.2) */
+
+/** Largest degree of Psi in each parameter. */
+#define CYC_MAX_PN_DEGREE 8
+
+/** An opaque PN surface: a rational tensor-product Bezier surface Psi of
+ *  I^3 over [0, 1]^2 and its envelope of planes Phi = Lambda^{-1}(Psi)
+ *  (about 5 KiB; creation tier: allocated through the context). */
+typedef struct cyc_pn_surface cyc_pn_surface;
+
+/** One point of Phi's offset at distance d: the point x + d n, its partials,
+ *  the unit normal n (the same for every offset), the tangent plane and
+ *  y = Psi(u, v). */
+typedef struct cyc_pn_point {
+  double point[3];
+  double x_u[3];
+  double x_v[3];
+  double normal[3];
+  cyc_oriented_plane plane;
+  double y[3];
+} cyc_pn_point;
+
+/** Psi from (degree_u + 1)(degree_v + 1) homogeneous control points
+ *  control[4 (i (degree_v + 1) + j) + 0..3] = (w, w y1, w y2, w y3), w > 0,
+ *  i along u. CYC_E_INVALID_ARGUMENT (a degree < 0, a weight <= 0),
+ *  CYC_E_DEGREE_TOO_HIGH (> CYC_MAX_PN_DEGREE), CYC_E_NOT_FINITE,
+ *  CYC_E_OUT_OF_MEMORY. *out is written only on success. */
+CYC_API int cyc_pn_surface_create(cyc_context* ctx, int degree_u, int degree_v,
+                                  const double* control, cyc_pn_surface** out);
+/** Releases a PN surface (NULL is ignored). */
+CYC_API void cyc_pn_surface_destroy(cyc_pn_surface* surface);
+/** The point of the offset at signed distance d (d = 0: Phi) at (u, v) in
+ *  [0, 1]^2. CYC_E_BAD_DOMAIN outside, CYC_E_NOT_FINITE, CYC_E_DEVELOPABLE
+ *  (plane and partials dependent), CYC_E_POINT_AT_INFINITY (det of the
+ *  parameterization of (y1, y2) vanishes), CYC_E_NUMERICAL_OVERFLOW.
+ *  Allocation-free. */
+CYC_API int cyc_pn_surface_eval(cyc_context* ctx, const cyc_pn_surface* surface, double u,
+                                double v, double d, cyc_pn_point* out);
+/** The grid (us[i], vs[j]) into index i nv + j of the wanted buffers
+ *  (points, normals; either may have data = NULL), offset d. Every
+ *  parameter and the buffers are checked before anything is written; a
+ *  point that fails (developable, at infinity) is written as (0, 0, 0) in
+ *  both and counted in *failed (may be NULL). Allocation-free. */
+CYC_API int cyc_pn_surface_eval_grid(cyc_context* ctx, const cyc_pn_surface* surface,
+                                     const double* us, size_t nu, const double* vs, size_t nv,
+                                     double d, cyc_buffer3 points, cyc_buffer3 normals,
+                                     size_t* failed);
+
 /* ---- parabolic Dupin cyclides (§4.1) */
 
 /** Thm 4.1: Lambda^{-1} of the graph y3 = q / 2. CYC_E_DEGENERATE_CYCLIDE
