@@ -894,9 +894,23 @@ TEST(AllocFreeLaguerre, EvaluatorsPatchesAndDesign) {
   const cyc_graph_quadratic q{{-1.0, 0.2, 0.5, 0.4, -0.2, 0.3}};
   cyc_quadratic_graph_triangle gt{{{-0.5, -0.4}, {0.7, -0.1}, {0.1, 0.8}}, {0.1, 0.2, 0.3, 0.1, 0.0, -0.2}};
   const double corner[2] = {-0.3, -0.2}, e1[2] = {0.6, 0.1}, e2[2] = {-0.1, 0.5};
+  double control[16];
+  for (int i = 0, k = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      control[k++] = 1, control[k++] = i - 0.5, control[k++] = j - 0.5, control[k++] = 0.3 + 0.1 * i;
+  cyc_pn_surface* pn = nullptr;
+  ASSERT_EQ(cyc_pn_surface_create(ctx, 1, 1, control, &pn), CYC_OK);
+  double us[8], vs[8], gp[3 * 64], gn[3 * 64];
+  for (int i = 0; i < 8; ++i) us[i] = vs[i] = i / 7.0;
   int bad = 0, np = 0, nt = 0;
   const Heap heap = measure([&] {
     for (int r = 0; r < 3; ++r) {
+      cyc_pn_point pp;
+      size_t failed = 0;
+      bad += cyc_pn_surface_eval(ctx, pn, 0.3, 0.1 * r, 0.5, &pp) != CYC_OK;
+      bad += cyc_pn_surface_eval_grid(ctx, pn, us, 8, vs, 8, 0.2, cyc_buffer3{gp, 64, 3},
+                                      cyc_buffer3{gn, 64, 3}, &failed) != CYC_OK;
+      bad += failed != 0;
       cyc_oriented_plane p{0.5 * r, {0.36, -0.48, 0.8}}, back;
       cyc_isotropic_point y;
       bad += cyc_laguerre_to_isotropic(ctx, &p, &y) != CYC_OK;
@@ -926,5 +940,6 @@ TEST(AllocFreeLaguerre, EvaluatorsPatchesAndDesign) {
   EXPECT_GT(np, 0);
   EXPECT_EQ(heap.allocations, 0);
   EXPECT_EQ(heap.frees, 0);
+  cyc_pn_surface_destroy(pn);
   cyc_context_destroy(ctx);
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -1043,6 +1044,95 @@ TEST(LaguerreCapiAllocator, DesignWorkspaceFromTheContext) {
   EXPECT_EQ(np, -1);
   count.refuse = false;
   cyc_context_destroy(ctx);
+}
+
+}  // namespace
+
+namespace {
+
+// Thm. 3.2: Psi = the bilinear patch y = (y1, y2, c) (a plane of I^3, the
+// paraboloid (2.4) of the cycle (m, r) = ((0, 0, -c), -c)... checked
+// directly): every point x of Phi lies on its plane Lambda^{-1}(y), the
+// normal is sigma^{-1}(y1, y2), orthogonal to the partials, and the offset
+// at d is x + d n.
+TEST_F(LaguerreCapi, PnSurfaceOfABilinearPsi) {
+  // Bilinear over [-0.5, 0.5]^2 with y3 = 0.3 + 0.2 y1 - 0.1 y2 (a plane of I^3).
+  double control[4 * 4];
+  int k = 0;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const double y1 = -0.5 + i, y2 = -0.5 + j;
+      control[k++] = 1, control[k++] = y1, control[k++] = y2;
+      control[k++] = 0.3 + 0.2 * y1 - 0.1 * y2;
+    }
+  cyc_pn_surface* S = nullptr;
+  ASSERT_EQ(cyc_pn_surface_create(ctx, 1, 1, control, &S), CYC_OK);
+  for (double u : {0.0, 0.3, 1.0})
+    for (double v : {0.2, 0.9}) {
+      cyc_pn_point P, Q;
+      ASSERT_EQ(cyc_pn_surface_eval(ctx, S, u, v, 0.0, &P), CYC_OK);
+      const double y1 = -0.5 + u, y2 = -0.5 + v;
+      double n[3];
+      normal_of(y1, y2, n);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(P.normal[i], n[i], 1e-14);
+      const double y3 = 0.3 + 0.2 * y1 - 0.1 * y2;
+      const double N = 1 + y1 * y1 + y2 * y2;
+      EXPECT_NEAR(2 * y3 / N + dot3(n, P.point), 0, 1e-13);
+      EXPECT_NEAR(dot3(n, P.x_u), 0, 1e-12 * (1 + norm3(P.x_u)));
+      EXPECT_NEAR(dot3(n, P.x_v), 0, 1e-12 * (1 + norm3(P.x_v)));
+      ASSERT_EQ(cyc_pn_surface_eval(ctx, S, u, v, 0.7, &Q), CYC_OK);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(Q.point[i], P.point[i] + 0.7 * n[i], 1e-13);
+    }
+  // The grid equals the single evaluations.
+  const double us[3] = {0, 0.5, 1}, vs[2] = {0.25, 0.75};
+  double pts[18], nrm[18];
+  size_t failed = 9;
+  ASSERT_EQ(cyc_pn_surface_eval_grid(ctx, S, us, 3, vs, 2, 0.1, cyc_buffer3{pts, 6, 3},
+                                     cyc_buffer3{nrm, 6, 3}, &failed),
+            CYC_OK);
+  EXPECT_EQ(failed, 0u);
+  cyc_pn_point P;
+  ASSERT_EQ(cyc_pn_surface_eval(ctx, S, us[2], vs[1], 0.1, &P), CYC_OK);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(pts[15 + i], P.point[i]);
+  // Errors.
+  poison(P);
+  EXPECT_EQ(cyc_pn_surface_eval(ctx, S, 1.5, 0, 0, &P), CYC_E_BAD_DOMAIN);
+  expect_message("cyc_pn_surface_eval");
+  EXPECT_EQ(cyc_pn_surface_eval(ctx, S, kNaN, 0, 0, &P), CYC_E_NOT_FINITE);
+  EXPECT_EQ(cyc_pn_surface_eval(ctx, S, 0, 0, kInf, &P), CYC_E_NOT_FINITE);
+  EXPECT_TRUE(poisoned(P));
+  double pts2[18];
+  poison(pts2);
+  EXPECT_EQ(cyc_pn_surface_eval_grid(ctx, S, us, 3, vs, 2, 0.1, cyc_buffer3{pts2, 5, 3},
+                                     cyc_buffer3{nullptr, 0, 0}, nullptr),
+            CYC_E_BUFFER_TOO_SMALL);
+  const double bad_us[3] = {0, 2, 1};
+  EXPECT_EQ(cyc_pn_surface_eval_grid(ctx, S, bad_us, 3, vs, 2, 0.1, cyc_buffer3{pts2, 6, 3},
+                                     cyc_buffer3{nullptr, 0, 0}, nullptr),
+            CYC_E_BAD_DOMAIN);
+  expect_message("cyc_pn_surface_eval_grid");
+  EXPECT_TRUE(poisoned(pts2));
+  cyc_pn_surface_destroy(S);
+  // A degenerate Psi (all points equal): developable everywhere.
+  double point[16];
+  for (int i = 0; i < 4; ++i) point[4 * i] = 1, point[4 * i + 1] = 0.1, point[4 * i + 2] = 0.2, point[4 * i + 3] = 0.3;
+  cyc_pn_surface* D = nullptr;
+  if (cyc_pn_surface_create(ctx, 1, 1, point, &D) == CYC_OK) {
+    EXPECT_EQ(cyc_pn_surface_eval(ctx, D, 0.5, 0.5, 0, &P), CYC_E_DEVELOPABLE);
+    cyc_pn_surface_destroy(D);
+  }
+  cyc_pn_surface* out = reinterpret_cast<cyc_pn_surface*>(uintptr_t(0x5eed));
+  EXPECT_EQ(cyc_pn_surface_create(ctx, -1, 1, control, &out), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(cyc_pn_surface_create(ctx, 9, 1, control, &out), CYC_E_DEGREE_TOO_HIGH);
+  double w0[16];
+  std::memcpy(w0, control, sizeof w0);
+  w0[4] = 0;
+  EXPECT_EQ(cyc_pn_surface_create(ctx, 1, 1, w0, &out), CYC_E_INVALID_ARGUMENT);
+  w0[4] = kNaN;
+  EXPECT_EQ(cyc_pn_surface_create(ctx, 1, 1, w0, &out), CYC_E_NOT_FINITE);
+  EXPECT_EQ(cyc_pn_surface_create(ctx, 1, 1, nullptr, &out), CYC_E_NULL_ARGUMENT);
+  expect_message("cyc_pn_surface_create");
+  EXPECT_EQ(out, reinterpret_cast<cyc_pn_surface*>(uintptr_t(0x5eed)));
 }
 
 }  // namespace
