@@ -110,8 +110,11 @@ Outcome point_checked(const char* fn, const char* name, const cyc_isotropic_poin
 
 // An isotropic point for the caller, if finite.
 Outcome point_out(const char* fn, const IsotropicPoint& Y, cyc_isotropic_point* out) {
-  if (Y.exceptional ? !std::isfinite(Y.c) : !Y.y.allFinite())
-    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result overflows", fn);
+  // Beyond 1e100 the point would not be accepted back as an input (e.g.
+  // Lambda of a plane whose normal is within ~1e-50 of W): overflow.
+  if (Y.exceptional ? bad(Y.c) : (bad(Y.y[0]) || bad(Y.y[1]) || bad(Y.y[2])))
+    return fail(CYC_E_NUMERICAL_OVERFLOW,
+                "%s: the result is beyond 1e100 (not usable as an input)", fn);
   cyc_isotropic_point y;
   std::memset(&y, 0, sizeof y);
   y.exceptional = Y.exceptional ? 1 : 0;
