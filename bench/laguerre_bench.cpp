@@ -92,6 +92,35 @@ void BM_BicubicPatchGrid64(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 64 * 64);
 }
 
+// Lambda^{-1} with offsets of a bicubic Psi (Thm. 3.2) on a 64 x 64 grid.
+void BM_PnSurfaceGrid(benchmark::State& state) {
+  Ctx c;
+  double control[4 * 16];
+  for (int i = 0, k = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double y1 = -0.6 + 0.4 * i, y2 = -0.6 + 0.4 * j;
+      control[k++] = 1 + 0.1 * ((i + j) % 2), control[k++] = y1 * control[k - 1],
+      control[k++] = y2 * control[k - 2];
+      control[k++] = (0.3 - 0.5 * y1 * y1 + 0.2 * y2 * y2 + 0.1 * y1 * y2 * y2) * control[k - 3];
+    }
+  cyc_pn_surface* S = nullptr;
+  if (cyc_pn_surface_create(c.ctx, 3, 3, control, &S) != CYC_OK)
+    return state.SkipWithError(cyc_context_last_error(c.ctx));
+  std::vector<double> us(64), pts(3 * 64 * 64), nrm(3 * 64 * 64);
+  for (int i = 0; i < 64; ++i) us[i] = i / 63.0;
+  size_t failed = 0;
+  for (auto _ : state) {
+    if (cyc_pn_surface_eval_grid(c.ctx, S, us.data(), 64, us.data(), 64, 0.25,
+                                 cyc_buffer3{pts.data(), 4096, 3}, cyc_buffer3{nrm.data(), 4096, 3},
+                                 &failed) != CYC_OK)
+      return state.SkipWithError(cyc_context_last_error(c.ctx));
+    benchmark::DoNotOptimize(pts.data());
+  }
+  state.counters["failed"] = double(failed);
+  state.SetItemsProcessed(state.iterations() * 64 * 64);
+  cyc_pn_surface_destroy(S);
+}
+
 void BM_CubicTriangle(benchmark::State& state) {
   Ctx c;
   cyc_quadratic_graph_triangle t{{{-0.5, -0.4}, {0.7, -0.1}, {0.1, 0.8}},
@@ -153,6 +182,7 @@ void BM_Design1000(benchmark::State& state) {
 BENCHMARK(BM_LambdaInverse);
 BENCHMARK(BM_ParabolicCyclideEval);
 BENCHMARK(BM_BicubicPatchGrid64)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PnSurfaceGrid)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CubicTriangle);
 BENCHMARK(BM_Delaunay)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Design1000)->Unit(benchmark::kMillisecond);
