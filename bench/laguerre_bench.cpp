@@ -99,9 +99,12 @@ void BM_PnSurfaceGrid(benchmark::State& state) {
   for (int i = 0, k = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       const double y1 = -0.6 + 0.4 * i, y2 = -0.6 + 0.4 * j;
-      control[k++] = 1 + 0.1 * ((i + j) % 2), control[k++] = y1 * control[k - 1],
-      control[k++] = y2 * control[k - 2];
-      control[k++] = (0.3 - 0.5 * y1 * y1 + 0.2 * y2 * y2 + 0.1 * y1 * y2 * y2) * control[k - 3];
+      const double w = 1 + 0.1 * ((i + j) % 2);
+      const double y3 = 0.3 - 0.5 * y1 * y1 + 0.2 * y2 * y2 + 0.1 * y1 * y2 * y2;
+      control[k++] = w;  // homogeneous (w, w y1, w y2, w y3)
+      control[k++] = w * y1;
+      control[k++] = w * y2;
+      control[k++] = w * y3;
     }
   cyc_pn_surface* S = nullptr;
   if (cyc_pn_surface_create(c.ctx, 3, 3, control, &S) != CYC_OK)

@@ -1136,3 +1136,37 @@ TEST_F(LaguerreCapi, PnSurfaceOfABilinearPsi) {
 }
 
 }  // namespace
+
+// The parabolic cyclide as a circle-family surface through the one
+// evaluator: cyc_surface_eval equals (4.1) (cyc_parabolic_cyclide_eval).
+TEST_F(LaguerreCapi, ParabolicCyclideSurfaceIsItsCircleFamily) {
+  cyc_parabolic_cyclide c;
+  std::memset(&c, 0, sizeof c);
+  c.a = 1.25;
+  c.b = -0.5;
+  c.frame[0] = c.frame[4] = c.frame[8] = 1;
+  c.origin[0] = 2;
+  cyc_surface* s = nullptr;
+  ASSERT_EQ(cyc_parabolic_cyclide_surface_create(ctx, &c, -1.5, 1.5, &s), CYC_OK)
+      << cyc_context_last_error(ctx);
+  for (double u : {-1.5, -0.2, 0.7})
+    for (double v : {-2.0, 0.0, 0.9, 30.0}) {
+      double x[3], n[3], e[3], en[3];
+      ASSERT_EQ(cyc_surface_eval(ctx, s, u, v, x, nullptr, nullptr, n), CYC_OK);
+      ASSERT_EQ(cyc_parabolic_cyclide_eval(ctx, &c, u, v, e, en), CYC_OK);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(x[i], e[i], 1e-13 * (1 + std::abs(e[i])));
+      EXPECT_NEAR(std::abs(n[0] * en[0] + n[1] * en[1] + n[2] * en[2]), 1.0, 1e-12);
+    }
+  cyc_surface_destroy(ctx, s);
+  cyc_parabolic_cyclide horn = c;
+  horn.a = 2;
+  horn.b = 1;  // a u-circle of radius 0 at u = +-1
+  cyc_surface* untouched = reinterpret_cast<cyc_surface*>(&horn);
+  cyc_surface* t = untouched;
+  EXPECT_EQ(cyc_parabolic_cyclide_surface_create(ctx, &horn, 0.5, 1.5, &t), CYC_E_SINGULAR_POINT);
+  EXPECT_EQ(t, untouched);
+  EXPECT_NE(std::strstr(cyc_context_last_error(ctx), "cyc_parabolic_cyclide_surface_create"),
+            nullptr);
+  EXPECT_EQ(cyc_parabolic_cyclide_surface_create(ctx, &c, 1, 0, &t), CYC_E_BAD_DOMAIN);
+  EXPECT_EQ(cyc_parabolic_cyclide_surface_create(ctx, nullptr, 0, 1, &t), CYC_E_NULL_ARGUMENT);
+}

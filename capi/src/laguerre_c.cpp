@@ -16,6 +16,7 @@
 #include "cyclide/bezier_triangle.hpp"
 #include "cyclide/cyclide_design.hpp"
 #include "cyclide/delaunay.hpp"
+#include "cyclide/surface.hpp"
 #include "cyclide/laguerre.hpp"
 #include "cyclide/parabolic_cyclide.hpp"
 #include "cyclide/pn_surface.hpp"
@@ -752,6 +753,23 @@ int cyc_parabolic_cyclide_parameter_of(cyc_context* ctx, const cyc_parabolic_cyc
     uv[0] = p[0];
     uv[1] = p[1];
     return ok();
+  });
+}
+
+int cyc_parabolic_cyclide_surface_create(cyc_context* ctx, const cyc_parabolic_cyclide* c,
+                                         double u0, double u1, cyc_surface** out) {
+  const char* fn = "cyc_parabolic_cyclide_surface_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(c);
+    REQUIRE(out);
+    ParabolicCyclide C;
+    if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
+    Surface S;
+    double bad_u = u0;
+    const Status s = make_parabolic_cyclide_surface(C, u0, u1, S, &bad_u);
+    if (s == Status::singular_point) return from_core_at(fn, s, bad_u);
+    if (s != Status::ok) return from_core(fn, s);
+    return emit(fn, ctx, out, S);
   });
 }
 

@@ -2161,6 +2161,17 @@ CYC_API int cyc_parabolic_cyclide_net_projection(cyc_context* ctx,
  *  sphere uses its stereographic parameter). */
 CYC_API int cyc_parabolic_cyclide_parameter_of(cyc_context* ctx, const cyc_parabolic_cyclide* c,
                                                const double x[3], double uv[2]);
+/** The cyclide as a circle-family surface (kind CYC_SURFACE_PARABOLIC) over
+ *  u in [u0, u1]: its u-circles of (4.1) through the one evaluator
+ *  (cyc_surface_eval etc.; v is the v of (4.1), so points equal
+ *  cyc_parabolic_cyclide_eval), cyc_surface_sphere the sphere touching along
+ *  the u-circle. CYC_E_BAD_DOMAIN, CYC_E_DEGENERATE_CYCLIDE (a = b = 0),
+ *  CYC_E_INVALID_ARGUMENT (frame not a rotation), CYC_E_SINGULAR_POINT (a
+ *  u-circle of radius 0 in the domain: a horn cyclide's singular point;
+ *  the message names u). Setup tier (one allocation). */
+CYC_API int cyc_parabolic_cyclide_surface_create(cyc_context* ctx,
+                                                 const cyc_parabolic_cyclide* c, double u0,
+                                                 double u1, cyc_surface** out);
 
 /* ---- patches (§4.1) */
 
