@@ -1063,6 +1063,386 @@ static void dupin_demos(cyc_context* ctx, const char* dir, FILE* report) {
   }
 }
 
+/* Seed 004: Laguerre geometry. A PN surface Lambda^{-1}(Psi) with exact
+ * offsets (§3), a parabolic ring cyclide as a circle family with a cone of
+ * Thm. 4.2 (§4.1), and the G1 design of an ellipsoid cap from oriented
+ * points by parabolic cyclide triangles, with its offset (§4.2). */
+static double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static double norm3(const double a[3]) { return sqrt(dot3(a, a)); }
+static double dist3(const double a[3], const double b[3]) {
+  const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  return norm3(d);
+}
+
+/* sigma^{-1}(y): the unit normal of the isotropic parameter y (§2). */
+static void normal_of(double y1, double y2, double n[3]) {
+  const double N = 1 + y1 * y1 + y2 * y2;
+  n[0] = 2 * y1 / N;
+  n[1] = 2 * y2 / N;
+  n[2] = (y1 * y1 + y2 * y2 - 1) / N;
+}
+
+/* An open nu x nv grid mesh with normals as OBJ. */
+static void write_grid(const char* dir, const char* name, const double* pts, const double* nrm,
+                       int nu, int nv, FILE* report) {
+  char file[256];
+  FILE* f;
+  int i, j;
+  snprintf(file, sizeof file, "%s.obj", name);
+  f = open_out(dir, file);
+  fprintf(f, "# cyclide demo: %s, %d x %d grid\n", name, nu, nv);
+  for (i = 0; i < nu * nv; ++i)
+    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
+  for (i = 0; i < nu * nv; ++i)
+    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+  for (i = 0; i + 1 < nu; ++i)
+    for (j = 0; j + 1 < nv; ++j) {
+      const int a = i * nv + j + 1, b = a + 1, c = a + nv, d = c + 1;
+      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, d, d, c, c);
+    }
+  fclose(f);
+  fprintf(report, "  wrote %s/%s\n", dir, file);
+}
+
+/* Bernstein coefficients of u^k in degree 3: C(i, k) / C(3, k). */
+static double bernstein_of_power(int i, int k) {
+  static const double C[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+  return C[i][k] / C[3][k];
+}
+
+#define PN_GRID 33
+static void pn_demo(cyc_context* ctx, const char* dir, FILE* report) {
+  /* Psi(u, v) = (u - 1/2, v - 1/2, f(u, v)) over [0, 1]^2, bicubic: f is the
+   * paraboloid -(r/2)(1 + y1^2 + y2^2) of the sphere of radius r = 2 about
+   * the origin (2.4) plus a small cubic bump, so Phi is a dented sphere cap
+   * whose unit normals and offsets are rational. */
+  static const double f[4][4] = {/* f = sum f[k][l] u^k v^l */
+                                 {-1.5, 1, -1, 0},
+                                 {1, 0, 0.15, -0.1},
+                                 {-1, 0.2, 0, 0},
+                                 {0.1, 0, 0, 0}};
+  static const double offsets[3] = {0, 0.5, -0.5};
+  static const char* names[3] = {"pn_surface", "pn_surface_offset_plus", "pn_surface_offset_minus"};
+  static double pts[3][PN_GRID * PN_GRID * 3], nrm[PN_GRID * PN_GRID * 3];
+  double control[16 * 4], grid[PN_GRID], worst_unit = 0, worst_orth = 0, worst_plane = 0,
+                                          worst_offset = 0;
+  cyc_pn_surface* S;
+  size_t failed;
+  int i, j, k, l, o;
+  for (i = 0; i < 4; ++i)
+    for (j = 0; j < 4; ++j) {
+      double* c = control + 4 * (4 * i + j);
+      c[0] = 1;
+      c[1] = i / 3.0 - 0.5;
+      c[2] = j / 3.0 - 0.5;
+      c[3] = 0;
+      for (k = 0; k < 4; ++k)
+        for (l = 0; l < 4; ++l) c[3] += f[k][l] * bernstein_of_power(i, k) * bernstein_of_power(j, l);
+    }
+  check(ctx, cyc_pn_surface_create(ctx, 3, 3, control, &S), "cyc_pn_surface_create");
+  fprintf(report, "\nSeed 004 §3 (Thm. 3.2): the PN surface Lambda^{-1}(Psi) of a bicubic Psi (a sphere "
+                  "of radius 2 in the isotropic model (2.4), dented by a cubic)\n");
+  for (i = 0; i < PN_GRID; ++i) grid[i] = (double)i / (PN_GRID - 1);
+  for (o = 0; o < 3; ++o) {
+    cyc_buffer3 P = {pts[o], PN_GRID * PN_GRID, 3}, N = {nrm, PN_GRID * PN_GRID, 3};
+    check(ctx, cyc_pn_surface_eval_grid(ctx, S, grid, PN_GRID, grid, PN_GRID, offsets[o], P, N,
+                                        &failed),
+          "cyc_pn_surface_eval_grid");
+    if (failed) fprintf(report, "  %zu grid points failed (developable or at infinity)\n", failed);
+    if (o > 0) fprintf(report, "  the offset at d = %+g:\n", offsets[o]);
+    write_grid(dir, names[o], pts[o], nrm, PN_GRID, PN_GRID, report);
+  }
+  /* Certificates: unit normals orthogonal to the partials, each point on its
+   * tangent plane, and the offsets at distance |d| along the normal. */
+  for (i = 0; i < PN_GRID; ++i)
+    for (j = 0; j < PN_GRID; ++j) {
+      cyc_pn_point p;
+      const int at = 3 * (i * PN_GRID + j);
+      check(ctx, cyc_pn_surface_eval(ctx, S, grid[i], grid[j], 0, &p), "cyc_pn_surface_eval");
+      worst_unit = fmax(worst_unit, fabs(norm3(p.normal) - 1));
+      worst_orth = fmax(worst_orth, fabs(dot3(p.normal, p.x_u)) / norm3(p.x_u));
+      worst_orth = fmax(worst_orth, fabs(dot3(p.normal, p.x_v)) / norm3(p.x_v));
+      worst_plane = fmax(worst_plane, fabs(p.plane.e0 + dot3(p.plane.e, p.point)));
+      for (o = 1; o < 3; ++o) {
+        double x[3];
+        for (k = 0; k < 3; ++k) x[k] = p.point[k] + offsets[o] * p.normal[k];
+        worst_offset = fmax(worst_offset, dist3(x, pts[o] + at));
+      }
+    }
+  fprintf(report, "  on the %d x %d grid: max | |n| - 1 | = %.1e, max |n . x_u| / |x_u|, "
+                  "|n . x_v| / |x_v| = %.1e,\n  max distance of a point to its tangent plane %.1e, "
+                  "max |offset - (x + d n)| = %.1e\n",
+          PN_GRID, PN_GRID, worst_unit, worst_orth, worst_plane, worst_offset);
+  cyc_pn_surface_destroy(S);
+}
+
+static const cyc_parabolic_cyclide* g_parabolic;
+static double parabolic_eq(const double p[3]) {
+  double r = 0;
+  check(g_ctx, cyc_parabolic_cyclide_implicit(g_ctx, g_parabolic, p, &r),
+        "cyc_parabolic_cyclide_implicit");
+  return r;
+}
+
+static void parabolic_cyclide_demo(cyc_context* ctx, const char* dir, FILE* report) {
+  cyc_parabolic_cyclide c;
+  cyc_revolution_cone K;
+  cyc_surface* s;
+  cyc_line e, fl;
+  int type, i;
+  double worst = 0;
+  static const char* types[] = {"horn", "ring", "thorn", "sphere", "point"};
+  memset(&c, 0, sizeof c);
+  c.a = 1;
+  c.b = -0.5;
+  c.frame[0] = c.frame[4] = c.frame[8] = 1;
+  check(ctx, cyc_parabolic_cyclide_type(ctx, &c, &type), "cyc_parabolic_cyclide_type");
+  check(ctx, cyc_parabolic_cyclide_lines(ctx, &c, &e, &fl), "cyc_parabolic_cyclide_lines");
+  fprintf(report, "\nSeed 004 §4.1: the parabolic Dupin cyclide (4.1) with a = %g, b = %g: type %s "
+                  "(a b < 0); lines e: x1 = 0, x3 = a and f: x2 = 0, x3 = b\n",
+          c.a, c.b, types[type]);
+  check(ctx, cyc_parabolic_cyclide_surface_create(ctx, &c, -2.5, 2.5, &s),
+        "cyc_parabolic_cyclide_surface_create");
+  fprintf(report, "  its u-circles u in [-2.5, 2.5] through the one circle-family evaluator; "
+                  "(4.2) on the mesh:\n");
+  g_ctx = ctx;
+  g_parabolic = &c;
+  write_surface(ctx, s, dir, "parabolic_ring_cyclide", parabolic_eq, report);
+  report_canal(ctx, s, report);
+  cyc_surface_destroy(ctx, s);
+  /* Thm. 4.2: the cone of revolution touching along the cubic circle
+   * phi(t, lambda t + mu); every point of the circle is at the cone's half
+   * angle from its axis. */
+  check(ctx, cyc_parabolic_cyclide_cone(ctx, &c, 0.5, 0.75, &K), "cyc_parabolic_cyclide_cone");
+  for (i = 0; i <= 40 && !K.cylinder; ++i) {
+    double x[3], w[3];
+    int k;
+    check(ctx, cyc_parabolic_cyclide_cubic_circle_point(ctx, &c, 0.5, 0.75, -4 + 0.2 * i, x),
+          "cyc_parabolic_cyclide_cubic_circle_point");
+    for (k = 0; k < 3; ++k) w[k] = x[k] - K.apex[k];
+    if (norm3(w) > 1e-9)
+      worst = fmax(worst, fabs(acos(fmin(1, fabs(dot3(w, K.axis)) / norm3(w))) - K.half_angle));
+  }
+  fprintf(report, "  Thm. 4.2, (lambda, mu) = (0.5, 0.75): cone apex (%.4g, %.4g, %.4g), half angle "
+                  "%.4f rad; the cubic circle's angle to the axis is off by at most %.1e rad\n",
+          K.apex[0], K.apex[1], K.apex[2], K.half_angle, worst);
+}
+
+/* The support point of the ellipsoid x^2/p^2 + y^2/q^2 + z^2/s^2 = 1 at the
+ * unit normal a: D a / sqrt(a . D a), D = diag(p^2, q^2, s^2). */
+static void ellipsoid_point(const double axes[3], const double a[3], double x[3]) {
+  double Da[3];
+  int k;
+  for (k = 0; k < 3; ++k) Da[k] = axes[k] * axes[k] * a[k];
+  for (k = 0; k < 3; ++k) x[k] = Da[k] / sqrt(dot3(a, Da));
+}
+
+#define DESIGN_GRID 8
+#define TESS 4 /* each cubic triangle as TESS^2 mesh triangles */
+static int design(cyc_context* ctx, const cyc_oriented_point* data, int n,
+                  cyc_quadratic_graph_triangle* iso, cyc_rational_cubic_triangle* patches, int cap,
+                  cyc_design_report* rep) {
+  int np = 0;
+  check(ctx, cyc_design_cyclide_surface(ctx, data, n, NULL, 0, NULL, NULL, 0, iso, patches, cap,
+                                        &np, rep),
+        "cyc_design_cyclide_surface");
+  return np;
+}
+
+/* The patch k at barycentrics (r, s, t) and its exact unit normal
+ * sigma^{-1}(y), y the domain point (the tangent plane there is Lambda^{-1}
+ * of the graph's tangent plane at y). */
+static void patch_point(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
+                        const cyc_rational_cubic_triangle* T, double r, double s, double t,
+                        double x[3], double n[3]) {
+  const double y1 = r * iso->vertex[0][0] + s * iso->vertex[1][0] + t * iso->vertex[2][0];
+  const double y2 = r * iso->vertex[0][1] + s * iso->vertex[1][1] + t * iso->vertex[2][1];
+  check(ctx, cyc_cubic_triangle_eval(ctx, T, r, s, t, x), "cyc_cubic_triangle_eval");
+  normal_of(y1, y2, n);
+}
+
+/* |n x (x_s x x_t) / |x_s x x_t|| at the centroid, x_s, x_t by central
+ * differences: the exact normal n = sigma^{-1}(y) is the patch's normal. */
+static double normal_check(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
+                           const cyc_rational_cubic_triangle* T, const double n[3]) {
+  const double h = 1e-5, c = 1 / 3.0;
+  double xp[3], xm[3], yp[3], ym[3], m[3], xs[3], xt[3], w[3];
+  int k;
+  patch_point(ctx, iso, T, c - h, c + h, c, xp, m);
+  patch_point(ctx, iso, T, c + h, c - h, c, xm, m);
+  patch_point(ctx, iso, T, c - h, c, c + h, yp, m);
+  patch_point(ctx, iso, T, c + h, c, c - h, ym, m);
+  for (k = 0; k < 3; ++k) xs[k] = xp[k] - xm[k], xt[k] = yp[k] - ym[k];
+  w[0] = xs[1] * xt[2] - xs[2] * xt[1];
+  w[1] = xs[2] * xt[0] - xs[0] * xt[2];
+  w[2] = xs[0] * xt[1] - xs[1] * xt[0];
+  m[0] = n[1] * w[2] - n[2] * w[1];
+  m[1] = n[2] * w[0] - n[0] * w[2];
+  m[2] = n[0] * w[1] - n[1] * w[0];
+  return norm3(m) / norm3(w);
+}
+
+static void write_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
+                            const cyc_rational_cubic_triangle* patches, int np, const char* dir,
+                            const char* name, FILE* report) {
+  const int per = (TESS + 1) * (TESS + 2) / 2;
+  char file[256];
+  FILE* f;
+  int k, i, j, base;
+  snprintf(file, sizeof file, "%s.obj", name);
+  f = open_out(dir, file);
+  fprintf(f, "# cyclide demo: %s, %d rational cubic triangles on parabolic Dupin cyclides\n", name,
+          np);
+  for (k = 0; k < np; ++k)
+    for (i = 0; i <= TESS; ++i)
+      for (j = 0; i + j <= TESS; ++j) {
+        double x[3], nn[3];
+        patch_point(ctx, iso + k, patches + k, 1 - (double)(i + j) / TESS, (double)i / TESS,
+                    (double)j / TESS, x, nn);
+        fprintf(f, "v %.9g %.9g %.9g\nvn %.6g %.6g %.6g\n", x[0], x[1], x[2], nn[0], nn[1], nn[2]);
+      }
+  for (k = 0, base = 1; k < np; ++k, base += per) {
+    /* Row i holds TESS + 1 - i vertices. */
+    int row = base;
+    for (i = 0; i < TESS; ++i) {
+      const int len = TESS + 1 - i, next = row + len;
+      for (j = 0; j + 1 < len; ++j) {
+        fprintf(f, "f %d//%d %d//%d %d//%d\n", row + j, row + j, next + j, next + j, row + j + 1,
+                row + j + 1);
+        if (j + 2 < len)
+          fprintf(f, "f %d//%d %d//%d %d//%d\n", row + j + 1, row + j + 1, next + j, next + j,
+                  next + j + 1, next + j + 1);
+      }
+      row = next;
+    }
+  }
+  fclose(f);
+  fprintf(report, "  wrote %s/%s\n", dir, file);
+}
+
+/* Across every interior edge of the patchwork: the largest gap between
+ * the two patches' points at the edge's quarter points (the normals agree
+ * by construction: both are sigma^{-1} of the same domain point). */
+static double edge_gap(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
+                       const cyc_rational_cubic_triangle* patches, int np, int* shared) {
+  double worst = 0;
+  int a, b, i, j, q;
+  *shared = 0;
+  for (a = 0; a < np; ++a)
+    for (b = a + 1; b < np; ++b)
+      for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+          const double* p0 = iso[a].vertex[i];
+          const double* p1 = iso[a].vertex[(i + 1) % 3];
+          const double* q0 = iso[b].vertex[(j + 1) % 3];
+          const double* q1 = iso[b].vertex[j];
+          if (p0[0] != q0[0] || p0[1] != q0[1] || p1[0] != q1[0] || p1[1] != q1[1]) continue;
+          ++*shared;
+          for (q = 1; q <= 3; ++q) {
+            double wa[3] = {0, 0, 0}, wb[3] = {0, 0, 0}, xa[3], xb[3], n[3];
+            wa[i] = 1 - q / 4.0, wa[(i + 1) % 3] = q / 4.0;
+            wb[(j + 1) % 3] = 1 - q / 4.0, wb[j] = q / 4.0;
+            patch_point(ctx, iso + a, patches + a, wa[0], wa[1], wa[2], xa, n);
+            patch_point(ctx, iso + b, patches + b, wb[0], wb[1], wb[2], xb, n);
+            worst = fmax(worst, dist3(xa, xb));
+          }
+        }
+  return worst;
+}
+
+static void design_demo(cyc_context* ctx, const char* dir, FILE* report) {
+  const double axes[3] = {3, 2.5, 2}, h = 0.6, d = 0.5;
+  const int n = DESIGN_GRID * DESIGN_GRID, cap = cyc_design_max_patches(n, 0);
+  cyc_oriented_point data[DESIGN_GRID * DESIGN_GRID], offset[DESIGN_GRID * DESIGN_GRID];
+  cyc_quadratic_graph_triangle *iso = malloc(cap * sizeof *iso), *iso_o = malloc(cap * sizeof *iso);
+  cyc_rational_cubic_triangle *P = malloc(cap * sizeof *P), *Po = malloc(cap * sizeof *P);
+  cyc_design_report rep;
+  double worst_data = 0, worst_ell = 0, worst_off = 0, worst_normal = 0, gap, t0;
+  int i, j, k, np, npo, shared;
+  if (!iso || !iso_o || !P || !Po) {
+    fprintf(stderr, "out of memory\n");
+    exit(1);
+  }
+  /* Data: the ellipsoid's support points at the normals sigma^{-1}(b) of an
+   * 8 x 8 grid b in [-0.6, 0.6]^2 (the lower cap, normals 5 to 62 degrees
+   * from straight down). */
+  for (i = 0; i < DESIGN_GRID; ++i)
+    for (j = 0; j < DESIGN_GRID; ++j) {
+      cyc_oriented_point* A = data + i * DESIGN_GRID + j;
+      normal_of(-h + 2 * h * (i + 0.5) / DESIGN_GRID, -h + 2 * h * (j + 0.5) / DESIGN_GRID,
+                A->normal);
+      ellipsoid_point(axes, A->normal, A->point);
+      offset[i * DESIGN_GRID + j] = *A;
+      for (k = 0; k < 3; ++k) offset[i * DESIGN_GRID + j].point[k] += d * A->normal[k];
+    }
+  t0 = now_seconds();
+  np = design(ctx, data, n, iso, P, cap, &rep);
+  fprintf(report, "\nSeed 004 §4.2: G1 design of the lower cap of the ellipsoid with axes (3, 2.5, 2) "
+                  "from %d oriented points\n  (Delaunay + Powell-Sabin 6-split in the isotropic model, "
+                  "%d triangles -> %d parabolic cyclide cubic triangles, %d ridge patches; %.1f ms)\n",
+          n, rep.triangles, np, rep.ridge_patches, 1e3 * (now_seconds() - t0));
+  /* Interpolation: the datum's point is the corner of the patches at its b. */
+  for (i = 0; i < n; ++i) {
+    cyc_isotropic_datum b;
+    double best = HUGE_VAL;
+    check(ctx, cyc_isotropic_datum_of(ctx, data + i, &b), "cyc_isotropic_datum_of");
+    for (k = 0; k < np; ++k)
+      for (j = 0; j < 3; ++j)
+        if (iso[k].vertex[j][0] == b.b[0] && iso[k].vertex[j][1] == b.b[1]) {
+          double w[3] = {0, 0, 0}, x[3], nn[3];
+          w[j] = 1;
+          patch_point(ctx, iso + k, P + k, w[0], w[1], w[2], x, nn);
+          best = fmin(best, dist3(x, data[i].point) + dist3(nn, data[i].normal));
+        }
+    worst_data = fmax(worst_data, best);
+  }
+  /* How far the patchwork strays from the ellipsoid it samples (no cyclide
+   * is an ellipsoid: this is approximation, not error). */
+  for (k = 0; k < np; ++k) {
+    double x[3], nn[3], q = 0;
+    patch_point(ctx, iso + k, P + k, 1 / 3.0, 1 / 3.0, 1 / 3.0, x, nn);
+    for (j = 0; j < 3; ++j) q += x[j] * x[j] / (axes[j] * axes[j]);
+    worst_ell = fmax(worst_ell, fabs(sqrt(q) - 1) * axes[2]);
+    worst_normal = fmax(worst_normal, normal_check(ctx, iso + k, P + k, nn));
+  }
+  gap = edge_gap(ctx, iso, P, np, &shared);
+  fprintf(report, "  data interpolated: max |x - A_i| + |n - alpha_i| = %.1e; G1 across %d interior "
+                  "patch edges: max gap %.1e\n  (both sides' normals are sigma^-1 of the same "
+                  "domain point; at the centroids they agree with the\n  patches' finite-difference "
+                  "tangent planes to %.1e); patch centroids within ~%.1e of the ellipsoid\n",
+          worst_data, shared, gap, worst_normal, worst_ell);
+  write_patchwork(ctx, iso, P, np, dir, "design_ellipsoid_cap", report);
+  /* (2.6): the design of the offset data is the offset of the design. */
+  npo = design(ctx, offset, n, iso_o, Po, cap, &rep);
+  for (k = 0; k < np && npo == np; ++k)
+    for (i = 0; i <= 3; ++i)
+      for (j = 0; i + j <= 3; ++j) {
+        const double r = 1 - (i + j) / 3.0, s = i / 3.0, t = j / 3.0;
+        double x[3], nn[3], xo[3], no[3];
+        int m;
+        patch_point(ctx, iso + k, P + k, r, s, t, x, nn);
+        patch_point(ctx, iso_o + k, Po + k, r, s, t, xo, no);
+        for (m = 0; m < 3; ++m) x[m] += d * nn[m];
+        worst_off = fmax(worst_off, dist3(x, xo));
+      }
+  fprintf(report, "  offset data (A_i + %g alpha_i): %d patches; max |design(offset data) - "
+                  "offset(design)| = %.1e\n",
+          d, npo, worst_off);
+  write_patchwork(ctx, iso_o, Po, npo, dir, "design_ellipsoid_cap_offset", report);
+  free(iso);
+  free(iso_o);
+  free(P);
+  free(Po);
+}
+
+static void laguerre_demos(cyc_context* ctx, const char* dir, FILE* report) {
+  pn_demo(ctx, dir, report);
+  parabolic_cyclide_demo(ctx, dir, report);
+  design_demo(ctx, dir, report);
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -1159,6 +1539,7 @@ int main(int argc, char** argv) {
   sqrt_and_implicit_demos(ctx, dir, report);
   skin_demos(ctx, dir, report);
   dupin_demos(ctx, dir, report);
+  laguerre_demos(ctx, dir, report);
   fclose(report);
   cyc_context_destroy(ctx);
   {

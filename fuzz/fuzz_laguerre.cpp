@@ -1,7 +1,7 @@
 // libFuzzer target: seed 004 through the C ABI (SPEC.md §8i) — Lambda and
 // Lambda^{-1}, cycle paraboloids (2.4), translations (2.5) and dilatations
-// (2.6), parabolic cyclides (4.1)-(4.3), cubic triangles, Delaunay and the
-// design (§4.2). Oracles: every call keeps the context contract
+// (2.6), PN surfaces Lambda^{-1}(Psi) (§3), parabolic cyclides (4.1)-(4.3),
+// cubic triangles, Delaunay and the design (§4.2). Oracles: every call keeps the context contract
 // (fz::check_call); OK results are finite and satisfy their defining
 // relation (Lambda o Lambda^{-1} = id, contact of the touching planes, (4.2)
 // on the surface, unit normals orthogonal to the partials, counter-clockwise
@@ -360,8 +360,9 @@ void op_design(State& st) {
   for (int i = 0; i < n; ++i) L = std::max(L, fz::norm3(data[i].point));
   for (int i = 0; i < n; ++i) {
     cyc_isotropic_datum d;
-    if (cyc_isotropic_datum_of(st.ctx, &data[i], &d) != CYC_OK) return;
-    st.check("cyc_isotropic_datum_of", CYC_OK);
+    const int rd = cyc_isotropic_datum_of(st.ctx, &data[i], &d);
+    st.check("cyc_isotropic_datum_of", rd);
+    if (rd != CYC_OK) return;
     bool found = false;
     for (int k = 0; k < np && !found; ++k)
       for (int c = 0; c < 3 && !found; ++c) {
@@ -381,6 +382,122 @@ void op_design(State& st) {
   }
 }
 
+// ------------------------------------------------------------ §3
+
+// The PN surface Lambda^{-1}(Psi) (Thm 3.2) of a random rational Bezier Psi.
+// Oracles: OK evaluations are finite with a unit normal orthogonal to the
+// partials, the point on its tangent plane, the offset at d equal to
+// x + d n, and the grid equal to the single evaluations (failed points
+// written as zero and counted); failed calls write nothing.
+void op_pn(State& st) {
+  Input& in = st.in;
+  const int du = in.rarely() ? in.range(-1, 9) : in.range(0, 3);
+  const int dv = in.rarely() ? in.range(-1, 9) : in.range(0, 3);
+  const size_t nc = du >= 0 && dv >= 0 ? size_t(du + 1) * size_t(dv + 1) : 1;
+  std::vector<double> control(4 * nc);
+  bool moderate = true;
+  for (size_t k = 0; k < nc; ++k) {
+    const double w = in.rarely() ? value(in, moderate) : 0.25 + in.range(0, 12) / 4.0;
+    control[4 * k] = w;
+    for (int c = 1; c < 4; ++c) control[4 * k + c] = w * value(in, moderate);
+  }
+  cyc_pn_surface* const sentinel = reinterpret_cast<cyc_pn_surface*>(uintptr_t(0x5eed));
+  cyc_pn_surface* S = sentinel;
+  const int rc = cyc_pn_surface_create(st.ctx, du, dv, control.data(), &S);
+  st.check("cyc_pn_surface_create", rc);
+  if (rc != CYC_OK) {
+    FZ_CHECK(S == sentinel, "pn create wrote on error");
+    return;
+  }
+  FZ_CHECK(S != nullptr, "pn create: OK but NULL");
+  const auto dot = [](const double* a, const double* b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  };
+  const int nq = in.range(1, 4);
+  for (int q = 0; q < nq; ++q) {
+    const double u = in.rarely() ? value(in, moderate) : in.range(0, 16) / 16.0;
+    const double v = in.rarely() ? value(in, moderate) : in.range(0, 16) / 16.0;
+    const double d = in.flag() ? 0.0 : value(in, moderate);
+    cyc_pn_point P, Q;
+    poison(P);
+    const int r0 = cyc_pn_surface_eval(st.ctx, S, u, v, 0.0, &P);
+    st.check("cyc_pn_surface_eval", r0);
+    if (r0 != CYC_OK) {
+      FZ_CHECK(poisoned(P), "pn eval wrote on error");
+      continue;
+    }
+    FZ_CHECK(finite_n(P.point, 3) && finite_n(P.x_u, 3) && finite_n(P.x_v, 3) &&
+                 finite_n(P.normal, 3) && finite_n(P.y, 3) && std::isfinite(P.plane.e0) &&
+                 finite_n(P.plane.e, 3),
+             "pn eval: OK but not finite");
+    const double* n = P.normal;
+    FZ_CHECK(std::fabs(fz::norm3(n) - 1) <= 1e-12, "pn normal not unit: %.17g", fz::norm3(n));
+    const double xu = fz::norm3(P.x_u), xv = fz::norm3(P.x_v), L = 1 + fz::norm3(P.point);
+    FZ_CHECK(std::fabs(dot(n, P.x_u)) <= 1e-7 * (xu + L) &&
+                 std::fabs(dot(n, P.x_v)) <= 1e-7 * (xv + L),
+             "pn normal not orthogonal to the partials: %.3g %.3g (|x_u| %.3g |x_v| %.3g)",
+             dot(n, P.x_u), dot(n, P.x_v), xu, xv);
+    FZ_CHECK(std::fabs(P.plane.e0 + dot(P.plane.e, P.point)) <= 1e-9 * (L + std::fabs(P.plane.e0)),
+             "pn point off its plane by %.3g", P.plane.e0 + dot(P.plane.e, P.point));
+    if (d == 0.0) continue;
+    poison(Q);
+    const int r1 = cyc_pn_surface_eval(st.ctx, S, u, v, d, &Q);
+    st.check("cyc_pn_surface_eval", r1);
+    if (r1 != CYC_OK) {
+      FZ_CHECK(poisoned(Q), "pn offset eval wrote on error");
+      // (Inputs beyond 1e100 count as not finite, as everywhere in the C ABI.)
+      FZ_CHECK(r1 == (std::fabs(d) <= 1e100 ? CYC_E_NUMERICAL_OVERFLOW : CYC_E_NOT_FINITE),
+               "offset of an evaluable point failed: %s",
+               cyc_status_name(r1));
+      continue;
+    }
+    double off[3];
+    for (int k = 0; k < 3; ++k) off[k] = P.point[k] + d * n[k];
+    FZ_CHECK(fz::dist3(off, Q.point) <= 1e-12 * (L + std::fabs(d)),
+             "pn offset at d = %.17g is off by %.3g", d, fz::dist3(off, Q.point));
+    FZ_CHECK(fz::dist3(Q.normal, n) == 0, "pn offset changed the normal");
+  }
+  // The grid: every point as the single evaluation gives it.
+  const size_t gu = size_t(in.range(0, 4)), gv = size_t(in.range(0, 4));
+  std::vector<double> us(std::max<size_t>(gu, 1)), vs(std::max<size_t>(gv, 1));
+  for (auto& x : us) x = in.rarely() ? value(in, moderate) : in.range(0, 8) / 8.0;
+  for (auto& x : vs) x = in.rarely() ? value(in, moderate) : in.range(0, 8) / 8.0;
+  const double d = in.flag() ? 0.0 : in.moderate();
+  const size_t want = gu * gv, cap = in.rarely() ? want / 2 : want;
+  std::vector<double> pts(3 * std::max<size_t>(cap, 1)), nrm(3 * std::max<size_t>(cap, 1));
+  for (auto& x : pts) poison(x);
+  for (auto& x : nrm) poison(x);
+  const bool with_normals = in.flag();
+  size_t failed = 12345;
+  const int rg = cyc_pn_surface_eval_grid(
+      st.ctx, S, us.data(), gu, vs.data(), gv, d, cyc_buffer3{pts.data(), cap, 3},
+      cyc_buffer3{with_normals ? nrm.data() : nullptr, cap, 3}, &failed);
+  st.check("cyc_pn_surface_eval_grid", rg);
+  if (rg != CYC_OK) {
+    for (auto& x : pts) FZ_CHECK(poisoned(x), "pn grid wrote points on error");
+    for (auto& x : nrm) FZ_CHECK(poisoned(x), "pn grid wrote normals on error");
+  } else {
+    size_t fails = 0;
+    for (size_t i = 0; i < gu; ++i)
+      for (size_t j = 0; j < gv; ++j) {
+        const double* g = &pts[3 * (i * gv + j)];
+        cyc_pn_point P;
+        const int r = cyc_pn_surface_eval(st.ctx, S, us[i], vs[j], d, &P);
+        st.check("cyc_pn_surface_eval", r);
+        if (r != CYC_OK) {
+          ++fails;
+          FZ_CHECK(g[0] == 0 && g[1] == 0 && g[2] == 0, "pn grid: failed point not zero");
+          continue;
+        }
+        FZ_CHECK(fz::dist3(g, P.point) == 0, "pn grid differs from eval at (%zu, %zu)", i, j);
+        if (with_normals)
+          FZ_CHECK(fz::dist3(&nrm[3 * (i * gv + j)], P.normal) == 0, "pn grid normal differs");
+      }
+    FZ_CHECK(failed == fails, "pn grid counted %zu failures, eval finds %zu", failed, fails);
+  }
+  cyc_pn_surface_destroy(S);
+}
+
 void op_nulls(State& st) {
   cyc_isotropic_point y{0, {0, 0, 0}, 0};
   cyc_oriented_plane p{0, {0, 0, 1}};
@@ -388,6 +505,13 @@ void op_nulls(State& st) {
   st.check("cyc_isotropic_to_laguerre", cyc_isotropic_to_laguerre(st.ctx, &y, nullptr));
   st.check("cyc_parabolic_cyclide_eval",
            cyc_parabolic_cyclide_eval(st.ctx, nullptr, 0, 0, nullptr, nullptr));
+  cyc_pn_point P;
+  st.check("cyc_pn_surface_eval", cyc_pn_surface_eval(st.ctx, nullptr, 0, 0, 0, &P));
+  st.check("cyc_pn_surface_eval_grid",
+           cyc_pn_surface_eval_grid(st.ctx, nullptr, nullptr, 1, nullptr, 1, 0,
+                                    cyc_buffer3{nullptr, 0, 3}, cyc_buffer3{nullptr, 0, 3},
+                                    nullptr));
+  cyc_pn_surface_destroy(nullptr);
   int np = 0;
   st.check("cyc_design_cyclide_surface",
            cyc_design_cyclide_surface(st.ctx, nullptr, 3, nullptr, 0, nullptr, nullptr, 0,
@@ -426,7 +550,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 4: op_triangle(st); break;
       case 5: op_delaunay(st); break;
       case 6: op_design(st); break;
-      default: op_nulls(st);
+      default:  // (8 cases kept: the corpus's inputs keep their meaning)
+        if (in.flag())
+          op_pn(st);
+        else
+          op_nulls(st);
     }
   }
   cyc_context_destroy(st.ctx);

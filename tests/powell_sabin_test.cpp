@@ -265,6 +265,18 @@ TEST(Delaunay, DegenerateInputsAndTheirStatuses) {
   EXPECT_EQ(rep.first, 1);
   EXPECT_EQ(triangulate({{0, 0}, {std::numeric_limits<double>::infinity(), 0}, {0, 1}}, tri),
             Status::not_finite);
+  // A dynamic range the exact predicates cannot take (their degree-4 terms
+  // would underflow): refused, not triangulated wrongly. The fuzz finding
+  // (regress-delaunay-underflow): 1e100 with 1e-104; the bound is 2^-190
+  // relative to the largest coordinate scaled into [1/2, 1).
+  EXPECT_EQ(triangulate({{0, 0}, {1e100, 0}, {0, 1}, {1e-104, 3}}, tri, &rep),
+            Status::numerical_overflow);
+  EXPECT_EQ(rep.first, 2);  // (0, 1) is already 1e-100 of the largest
+  EXPECT_EQ(triangulate({{0, 0}, {1, 0}, {0, 1}, {0x1p-190, 0.5}}, tri, &rep),  // 1 -> 1/2
+            Status::numerical_overflow);
+  EXPECT_EQ(triangulate({{0, 0}, {1, 0}, {0, 1}, {0x1p-189, 0.5}}, tri), Status::ok);
+  EXPECT_EQ(triangulate({{0, 0}, {0.75, 0}, {0, 0.75}, {0x1p-190, 0.5}}, tri), Status::ok);
+  EXPECT_EQ(check_triangulation({{0, 0}, {0.75, 0}, {0, 0.75}, {0x1p-190, 0.5}}, tri), "");
 
   // Buffers: the needed sizes are reported, the outputs untouched.
   const std::vector<Vec2d> pts = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0.5, 0.4}};

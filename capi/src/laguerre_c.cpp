@@ -894,6 +894,11 @@ int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* w
       return fail(int(s), "%s: points %d and %d are equal", fn, rep.first, rep.second);
     if (s == Status::collinear_points)
       return fail(int(s), "%s: all points lie on one line: no triangle exists", fn);
+    if (s == Status::numerical_overflow)
+      return fail(int(s),
+                  "%s: point %d has a coordinate below 2^-190 of the largest: the exact "
+                  "predicates would underflow",
+                  fn, rep.first);
     if (s != Status::ok) return from_core(fn, s);
     *ntri = count;
     return ok();

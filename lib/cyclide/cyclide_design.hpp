@@ -117,7 +117,9 @@ int cyclide_design_max_patches(int n, int ntri) noexcept;
 // Statuses: null_argument; invalid_argument (n < 3, a bad triangulation,
 // two data with the same b_i); not_finite, pole_in_gauss_image (a normal at
 // W, or W inside the normals' cone: gauss_image_contains_pole),
-// numerical_overflow (report->first_bad_datum); collinear_points (all b_i on
+// numerical_overflow (report->first_bad_datum: a datum beyond the range, or
+// whose b_i has a coordinate below kMinRelativeCoordinate of the largest,
+// see delaunay.hpp); collinear_points (all b_i on
 // a line); buffer_too_small (report->work_needed / patches_needed); ridge
 // (some patch folds, unless options.allow_ridges). Outputs untouched on error.
 Status design_cyclide_surface(const OrientedPoint* data, int n, const int (*tri)[3], int ntri,

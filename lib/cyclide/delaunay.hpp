@@ -34,6 +34,11 @@ inline namespace v0 {
 // Largest point count accepted (the workspace size stays below 2^31 ints).
 constexpr int kMaxDelaunayPoints = 50'000'000;
 
+// Smallest nonzero coordinate accepted, relative to the largest (after
+// scaling that one into [1/2, 1)): below it the exact predicates' products
+// could underflow (about 6e-58).
+constexpr double kMinRelativeCoordinate = 0x1p-190;
+
 // Where an input error lies: the non-finite point (first), the two equal
 // points (first < second), or, for buffer_too_small, the sizes needed.
 struct DelaunayReport {
@@ -58,6 +63,9 @@ int delaunay_max_triangles(int n) noexcept;
 //                     equal points (report->first < report->second)
 //   not_finite        a coordinate is NaN, Inf or beyond 1e100 (report->first)
 //   collinear_points  all points on one line (no triangle exists)
+//   numerical_overflow a nonzero coordinate below kMinRelativeCoordinate times
+//                     the largest (report->first): the exact predicates would
+//                     underflow
 //   buffer_too_small  work_len < delaunay_workspace_size(n) (report->work_needed),
 //                     or tri_cap below the triangle count (ntri and
 //                     report->triangles_needed get the count)

@@ -311,7 +311,10 @@ Status design_cyclide_surface(const OrientedPoint* data, int n, const int (*tri)
     for (int t = 0; t < ntri; ++t)
       for (int k = 0; k < 3; ++k) tris[t][k] = tri[t][k];
   } else {
-    if (Status st = delaunay_triangulate(b, n, iwork, ints, tris, tri_room, nt); st != Status::ok)
+    DelaunayReport drep;
+    const Status st = delaunay_triangulate(b, n, iwork, ints, tris, tri_room, nt, &drep);
+    if (st == Status::numerical_overflow) rep.first_bad_datum = drep.first;  // b_i too small
+    if (st != Status::ok)
       return fail(st == Status::buffer_too_small ? Status::internal_error : st);
     nt = peel_boundary_slivers(b, n, tris, nt, iwork, ints);
   }

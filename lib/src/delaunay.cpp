@@ -437,6 +437,20 @@ Status delaunay_triangulate(const Vec2d* pts, int n, int* work, std::size_t work
       hi[d] = std::max(hi[d], pts[i][d]);
     }
   }
+  // Scaled by a power of two to |x| < 1 (exact), no product overflows. The
+  // exact predicates also need no product to underflow: every coordinate is
+  // a multiple of the ulp of the smallest nonzero one, so with those at
+  // least 2^-190 the incircle's degree-4 terms are multiples of 2^-(4 * 242)
+  // > 2^-1022, all representable.
+  int e2 = 0;
+  std::frexp(max_abs, &e2);
+  const double scale = std::ldexp(1.0, -e2);
+  for (int i = 0; i < n; ++i)
+    for (int d = 0; d < 2; ++d)
+      if (pts[i][d] != 0 && std::fabs(pts[i][d]) * scale < kMinRelativeCoordinate) {
+        rep.first = i;
+        return finish(Status::numerical_overflow);
+      }
   const std::size_t need = delaunay_workspace_size(n);
   if (work_len < need) {
     rep.work_needed = need;
@@ -456,9 +470,7 @@ Status delaunay_triangulate(const Vec2d* pts, int n, int* work, std::size_t work
   mesh.stack = mesh.cavity + T;
   mesh.boundary = mesh.stack + T;
   mesh.first_of = keys;
-  int e2 = 0;
-  std::frexp(max_abs, &e2);
-  mesh.scale = std::ldexp(1.0, -e2);
+  mesh.scale = scale;
 
   // Hilbert order; equal points end up adjacent (ties broken by x, y).
   for (int i = 0; i < n; ++i) {
