@@ -327,6 +327,17 @@ TEST(Delaunay, ValidationOfUserTriangulations) {
   EXPECT_EQ(validate_triangulation(fan.data(), 5, three, 3, work.data(), work.size()),
             Status::invalid_argument);
   EXPECT_EQ(validate_triangulation(pts.data(), 5, good, 3, work.data(), 8), Status::buffer_too_small);
+  // Tiny triangles are exact (the points are scaled by a power of two) ...
+  std::vector<Vec2d> tiny = pts;
+  for (Vec2d& p : tiny) p *= 1e-300;
+  EXPECT_EQ(validate_triangulation(tiny.data(), 5, good, 3, work.data(), work.size()), Status::ok);
+  EXPECT_EQ(validate_triangulation(tiny.data(), 5, clockwise, 1, work.data(), work.size()),
+            Status::invalid_argument);
+  // ... but a dynamic range beyond 2^190 is refused.
+  tiny[4] = Vec2d(1e100, 0);
+  EXPECT_EQ(validate_triangulation(tiny.data(), 5, good, 3, work.data(), work.size(), nullptr, &rep),
+            Status::numerical_overflow);
+  EXPECT_EQ(rep.first, 1);
 }
 
 // ------------------------------------------------------------------ evaluator

@@ -84,7 +84,9 @@ std::size_t triangulation_workspace_size(int ntri) noexcept;
 // edge tri[t][k] -> tri[t][(k+1)%3] (or -1 on the boundary). Does not
 // detect a triangulation that folds over itself around a vertex with
 // consistent edges (a branched covering). Statuses: invalid_argument (with
-// report->first = the offending triangle), not_finite, buffer_too_small.
+// report->first = the offending triangle), not_finite, numerical_overflow
+// (a coordinate below the exact predicates' range, as delaunay_triangulate;
+// report->first = the point), buffer_too_small.
 Status validate_triangulation(const Vec2d* pts, int n, const int (*tri)[3], int ntri, int* work,
                               std::size_t work_len, int* neighbor = nullptr,
                               DelaunayReport* report = nullptr) noexcept;

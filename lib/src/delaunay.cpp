@@ -219,6 +219,20 @@ int incircle_sign(const Vec2d& a, const Vec2d& b, const Vec2d& c, const Vec2d& d
 
 namespace {
 
+// The power of two that scales the largest coordinate into [1/2, 1).
+double predicate_scale(double max_abs) noexcept {
+  int e2 = 0;
+  std::frexp(max_abs, &e2);
+  return std::ldexp(1.0, -e2);
+}
+
+// Nonzero coordinates at least kMinRelativeCoordinate once scaled.
+bool predicate_range_ok(const Vec2d& p, double scale) noexcept {
+  for (int d = 0; d < 2; ++d)
+    if (p[d] != 0 && std::fabs(p[d]) * scale < kMinRelativeCoordinate) return false;
+  return true;
+}
+
 bool finite_input(const Vec2d& p) noexcept {
   return std::isfinite(p.x()) && std::isfinite(p.y()) &&
          std::fabs(p.x()) <= kMaxInputMagnitude && std::fabs(p.y()) <= kMaxInputMagnitude;
@@ -442,15 +456,12 @@ Status delaunay_triangulate(const Vec2d* pts, int n, int* work, std::size_t work
   // a multiple of the ulp of the smallest nonzero one, so with those at
   // least 2^-190 the incircle's degree-4 terms are multiples of 2^-(4 * 242)
   // > 2^-1022, all representable.
-  int e2 = 0;
-  std::frexp(max_abs, &e2);
-  const double scale = std::ldexp(1.0, -e2);
+  const double scale = predicate_scale(max_abs);
   for (int i = 0; i < n; ++i)
-    for (int d = 0; d < 2; ++d)
-      if (pts[i][d] != 0 && std::fabs(pts[i][d]) * scale < kMinRelativeCoordinate) {
-        rep.first = i;
-        return finish(Status::numerical_overflow);
-      }
+    if (!predicate_range_ok(pts[i], scale)) {
+      rep.first = i;
+      return finish(Status::numerical_overflow);
+    }
   const std::size_t need = delaunay_workspace_size(n);
   if (work_len < need) {
     rep.work_needed = need;
@@ -542,10 +553,21 @@ Status validate_triangulation(const Vec2d* pts, int n, const int (*tri)[3], int 
   if (pts == nullptr || tri == nullptr || work == nullptr || n < 3 || ntri < 1 ||
       ntri > 2 * kMaxDelaunayPoints)
     return finish(Status::invalid_argument);
-  for (int i = 0; i < n; ++i)
+  double max_abs = 0;
+  for (int i = 0; i < n; ++i) {
     if (!finite_input(pts[i])) {
       rep.first = i;
       return finish(Status::not_finite);
+    }
+    max_abs = std::max({max_abs, std::fabs(pts[i].x()), std::fabs(pts[i].y())});
+  }
+  // The same exact range as delaunay_triangulate (no product under- or
+  // overflows in the orientation of the scaled points).
+  const double scale = predicate_scale(max_abs);
+  for (int i = 0; i < n; ++i)
+    if (!predicate_range_ok(pts[i], scale)) {
+      rep.first = i;
+      return finish(Status::numerical_overflow);
     }
   const std::size_t need = triangulation_workspace_size(ntri);
   if (work_len < need) {
@@ -555,8 +577,8 @@ Status validate_triangulation(const Vec2d* pts, int n, const int (*tri)[3], int 
   for (int t = 0; t < ntri; ++t) {
     const int* c = tri[t];
     const bool in_range = c[0] >= 0 && c[0] < n && c[1] >= 0 && c[1] < n && c[2] >= 0 && c[2] < n;
-    // |x| <= 1e100: the orientation's products stay below 1e201, exact.
-    if (!in_range || orient2d_sign(pts[c[0]], pts[c[1]], pts[c[2]]) <= 0) {
+    if (!in_range ||
+        orient2d_sign(pts[c[0]] * scale, pts[c[1]] * scale, pts[c[2]] * scale) <= 0) {
       rep.first = t;
       return finish(Status::invalid_argument);
     }
