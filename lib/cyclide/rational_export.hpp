@@ -1,0 +1,150 @@
+// Exact rational tensor-product Bezier export of circle-family surfaces
+// (issue 9 item 1, first slice): kinds prcs, prrs and ringed
+// (SurfaceKind 1..3). Kinds dupin and parabolic return Status::unsupported
+// for now (a later slice adds them: their frames are not ExactFrames).
+//
+// Math (the equation numbers (E1)..(E6) are referred to in
+// lib/src/rational_export.cpp). With the exact frame of exact.hpp
+//   o = O / wo,  a = A / wa,  p = P / wp          (polynomials in u)
+// and f(u, v) = (alpha v + beta) / (gamma v + delta):
+//   (E1) q = W + G a, W = alpha v + beta, G = gamma v + delta, rotates
+//        d = p - o about a (circle_family.hpp); scaling q by wa gives the
+//        same rotation with a polynomial quaternion q' = W wa + G A.
+//   (E2) p - o = D / (wo wp),  D = P wo - O wp.
+//   (E3) R(D) = N(v) / Q(v) with N = N0 + N1 v + N2 v^2, Q = Q0 + Q1 v + Q2 v^2
+//        the numerator and denominator of circle_quadratic for the frame
+//        (o = 0, a = A, p = D, alpha wa, beta wa, gamma, delta):
+//          Q_k = W2_k + G2_k |A|^2,
+//          N_k = (W2_k - G2_k |A|^2) D + 2 G2_k (A.D) A + 2 WG_k (A x D),
+//        W2, G2, WG the v-coefficients of W'^2, G^2 and W' G (W' = W wa).
+//   (E4) x = o + R(p - o) = [O wp Q + N] / (wo wp Q): the homogeneous point
+//        X_h(u, v) = sum_k (wo wp Q_k, O wp Q_k + N_k) v^k,
+//        of degree m in u and 2 in v, where (n_x = the largest degree of the
+//        numerators and the weight of x, n_f that of alpha..delta)
+//          m = n_o + n_p + 2 (n_a + n_f).
+//        Examples with f = v (tests/rational_export_test.cpp pins them):
+//        PRCS of Example 2's lines 5, of two polynomial cubics 43 (spine
+//        10, s' 15); PRRS of three polynomial cubics 30; ringed (d, n, c) of
+//        degrees (3, 2, 3): 10; PRRS of three rational cubics 66; PRCS of
+//        two rational cubics <= 26 + 3 + 2 * 52 = 133. A Mobius f of degree
+//        n_f adds 2 n_f. The degrees are those of exact.hpp's frames, whose
+//        leading coefficients below 1e-14 of the largest are dropped, so a
+//        short u-interval may give a lower m. Not always the minimal degree
+//        (Example 2 gives (5, 2); its closed form (23) has (3, 2)).
+//   (E5) v-pieces: Bernstein of degree 2 on [v0, v1]; |v| > 1 is written in
+//        w = 1/v (the evaluator's convention): X_h w^2 = X2 + X1 w + X0 w^2.
+//        Each piece is an arc of less than 120 degrees of every circle
+//        (checked at 65 values of u), so its middle weight
+//        <q(v0), q(v1)> = |q0||q1| cos(arc/2) is positive.
+//   (E6) u: all polynomials are converted to Bernstein form on [u0, u1]
+//        first (power form -> Bernstein by Horner in the Bernstein basis,
+//        stable: see bernstein_from_power) and multiplied there with the
+//        binomially weighted product, in long double (x86: 64-bit
+//        mantissa; the numerators O wp Q + N are differences of terms of
+//        the frame's size |o| + |p - o|, which can exceed |x| many times);
+//        a u-interval is bisected (de Casteljau) until every weight of
+//        every v-piece is positive.
+//
+// Degrees: deg_u = m <= kMaxExportDegree (else degree_too_high), deg_v = 2.
+// Patches: the v-pieces (at least one per part of [v0, v1] split at v = -1
+// and 1; a whole circle has at least 4) times the u-intervals (at least 1),
+// in u-major order (all v-pieces of the first u-interval, then the next);
+// a u-interval is bisected at most kMaxExportDepth times, a v-piece as well.
+// Accuracy: exact up to rounding. The exact frames are power forms (in t on
+// [-1, 1] over [u0, u1]), which lose accuracy at high degree; so every
+// patch is checked against Surface::eval at 3 x 3 points (error <=
+// kExportCheckTol times the largest |x| there, else numerical_overflow).
+// The tests find ~5e-16 relative to |x| for polynomial cubic inputs
+// (<= 1e-12 over 120000 random well-conditioned cases), ~6e-14 for the
+// degree-63 pieces of a rational quartic PRCS.
+// Allocation: none (evaluation tier); the caller owns the patch array.
+// Stack: about 320 KB at the deepest (GCC -O2: export 81 KB, the products
+// 151 KB in long double, exact_prrs_frame 76 KB).
+// Work: ~60 Bernstein products of degree <= m (O(m^2) each), O(m^2) per
+// u-bisection and per patch, 9 Surface::eval per patch.
+#pragma once
+
+#include "cyclide/config.hpp"
+#include "cyclide/status.hpp"
+#include "cyclide/surface.hpp"
+
+namespace cyclide {
+inline namespace v0 {
+
+// Largest degree in u of an exported patch (E4): PRCS of rational cubics
+// need <= 133 (131 measured), PRRS of rational cubics 66, polynomial cubic
+// inputs <= 43; a Mobius f of degree n_f adds 2 n_f. A patch is 15.5 KB.
+constexpr int kMaxExportDegree = 160;
+// Bisections of a u-interval or a v-piece.
+constexpr int kMaxExportDepth = 16;
+// Most v-pieces (u-intervals) of one export.
+constexpr int kMaxExportVPieces = 128;
+constexpr int kMaxExportUPieces = 512;
+// Patches must reproduce Surface::eval to this, relative to their size.
+constexpr double kExportCheckTol = 1e-9;
+
+struct RationalBezierPatch {
+  int deg_u = 0, deg_v = 2;
+  // The parameter rectangle covered, v in the surface's v. The local
+  // parameters (s, t) in [0, 1]^2 map to u = u0 + s (u1 - u0) and
+  //   v = v0 + t (v1 - v0)                 if !reciprocal_v,
+  //   1/v = (1 - t)/v0 + t/v1              if reciprocal_v (|v| >= 1; v0 or
+  //                                        v1 may be -inf or +inf, 1/inf = 0).
+  // In both cases v increases with t (the orientation of the surface).
+  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;
+  bool reciprocal_v = false;
+  // Homogeneous control point (w, w x, w y, w z) of (i, j), i = 0..deg_u,
+  // j = 0..deg_v, at cp[i * (deg_v + 1) + j]. Every w > 0.
+  double cp[(kMaxExportDegree + 1) * 3][4];
+};
+
+// What to export: u in [u0, u1] (inside the surface's domain) and v in
+// [v0, v1] (finite), or, with whole_circle, v over R and infinity.
+struct ExportDomain {
+  double u0 = 0, u1 = 1, v0 = -1, v1 = 1;
+  bool whole_circle = false;
+  static ExportDomain rectangle(double ua, double ub, double va, double vb) {
+    return {ua, ub, va, vb, false};
+  }
+  static ExportDomain circles(double ua, double ub) { return {ua, ub, 0, 0, true}; }
+};
+
+// The patches of S over D into out[0..cap). Statuses: ok (count written);
+// unsupported (dupin, parabolic); not_finite (a NaN or infinite bound);
+// bad_domain (not u0 < u1 inside the surface's domain, not v0 < v1);
+// degree_too_high (m >
+// kMaxExportDegree, or the exact frame's own bound); point_at_infinity (the
+// weight wo wp changes sign or vanishes at one of 65 values of u in
+// [u0, u1] -- a pole the builder's samples may have missed -- or the
+// weights keep both signs after kMaxExportDepth bisections where wo wp
+// changes sign); numerical_overflow (weights not positive after
+// kMaxExportDepth bisections otherwise, piece limits exceeded, or the check
+// against Surface::eval failed); Surface::eval's status where it fails at a
+// check point; buffer_too_small (count = the number needed, nothing
+// written; out may be null with cap = 0); null_argument (out null, cap >=
+// count). On every other status count is 0. out is written only after
+// every patch was built and checked (two passes): never half-written.
+Status export_rational_bezier(const Surface& S, const ExportDomain& D, RationalBezierPatch* out,
+                              int cap, int& count);
+
+// The number of patches export_rational_bezier writes for (S, D): its
+// statuses but buffer_too_small and those of the check against
+// Surface::eval (the count does not build the patches).
+Status rational_bezier_patch_count(const Surface& S, const ExportDomain& D, int& count);
+
+// Homogeneous point (w, w x, w y, w z) of the patch at local (s, t) in
+// [0, 1]^2 (de Casteljau in u, then in v).
+void patch_eval_homogeneous(const RationalBezierPatch& P, double s, double t, double (&h)[4]);
+// The point x (h[1..3] / h[0]).
+Vec3d patch_point(const RationalBezierPatch& P, double s, double t);
+// The surface parameters (u, v) of local (s, t); v is +-HUGE_VAL at w = 0.
+void patch_parameters(const RationalBezierPatch& P, double s, double t, double& u, double& v);
+
+// Bernstein coefficients b[0..n] on [t0, t1] of sum_k c[k] t^k: Horner in
+// the Bernstein basis (each step a convex combination times t0 or t1, so the
+// error is O(n eps sum |c_k| max(|t0|,|t1|)^k)). poly.hpp's to_bernstein
+// Taylor-shifts first, which cancels like 3^n for t in [-1, 1].
+void bernstein_from_power(const double* c, int n, double t0, double t1, double* b);
+
+}  // namespace v0
+}  // namespace cyclide
