@@ -355,6 +355,7 @@ static const struct {
     {CYC_E_NUMERICAL_OVERFLOW, "CYC_E_NUMERICAL_OVERFLOW"},
     {CYC_E_BUFFER_TOO_SMALL, "CYC_E_BUFFER_TOO_SMALL"},
     {CYC_E_OUT_OF_MEMORY, "CYC_E_OUT_OF_MEMORY"},
+    {CYC_E_IO, "CYC_E_IO"},
     {CYC_E_UNSUPPORTED, "CYC_E_UNSUPPORTED"},
     {CYC_E_INTERNAL, "CYC_E_INTERNAL"},
 };
@@ -362,7 +363,7 @@ static const struct {
 
 static void test_versions_and_names(void) {
   size_t i, j;
-  const int unknown[] = {-1, 6, 99, 131, 199, 201, 302, 402, 12345};
+  const int unknown[] = {-1, 6, 99, 131, 199, 201, 303, 402, 12345};
   CHECK(cyc_version_number() == CYC_VERSION_NUMBER);
   CHECK(cyc_version_string() != NULL);
   CHECK(strcmp(cyc_version_string(), CYC_VERSION_STRING) == 0);
@@ -388,7 +389,7 @@ static void test_versions_and_names(void) {
         CYC_E_BLEND_FOLDS == 127 && CYC_E_DEVELOPABLE == 128 &&
         CYC_E_POLE_IN_GAUSS_IMAGE == 129 && CYC_E_RIDGE == 130);
   CHECK(CYC_E_NUMERICAL_OVERFLOW == 200 && CYC_E_BUFFER_TOO_SMALL == 300 &&
-        CYC_E_OUT_OF_MEMORY == 301 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
+        CYC_E_OUT_OF_MEMORY == 301 && CYC_E_IO == 302 && CYC_E_UNSUPPORTED == 400 && CYC_E_INTERNAL == 401);
   CHECK(CYC_SURFACE_PRCS == 1 && CYC_SURFACE_PRRS == 2 && CYC_SURFACE_RINGED == 3 &&
         CYC_SURFACE_DUPIN == 4);
   for (i = 0; i < NSTATUS; ++i) {

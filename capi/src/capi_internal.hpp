@@ -174,6 +174,7 @@ inline const char* explain(Status s) {
       return "values leave the supported range (|frame| <= 1e30, |axis| >= 1e-30)";
     case Status::buffer_too_small: return "a buffer is too small";
     case Status::out_of_memory: return "out of memory";
+    case Status::io_error: return "a file could not be opened or written";
     case Status::unsupported: return "not supported by this build";
     case Status::internal_error: return "internal error";
   }

@@ -60,6 +60,7 @@ CYC_SAME(CYC_E_RIDGE, ridge);
 CYC_SAME(CYC_E_NUMERICAL_OVERFLOW, numerical_overflow);
 CYC_SAME(CYC_E_BUFFER_TOO_SMALL, buffer_too_small);
 CYC_SAME(CYC_E_OUT_OF_MEMORY, out_of_memory);
+CYC_SAME(CYC_E_IO, io_error);
 CYC_SAME(CYC_E_UNSUPPORTED, unsupported);
 CYC_SAME(CYC_E_INTERNAL, internal_error);
 static_assert(CYC_MAX_CURVE_DEGREE == kMaxCurveDegree, "bound");
@@ -120,6 +121,7 @@ const char* cyc_status_name(int status) {
     case CYC_E_BLEND_FOLDS: case CYC_E_DEVELOPABLE: case CYC_E_POLE_IN_GAUSS_IMAGE:
     case CYC_E_RIDGE:
     case CYC_E_NUMERICAL_OVERFLOW: case CYC_E_BUFFER_TOO_SMALL: case CYC_E_OUT_OF_MEMORY:
+    case CYC_E_IO:
     case CYC_E_UNSUPPORTED: case CYC_E_INTERNAL:
       return status_name(Status(status));
     default:

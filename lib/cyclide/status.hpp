@@ -50,6 +50,7 @@ enum class Status : int {
   // 300..399: resources
   buffer_too_small = 300,
   out_of_memory = 301,
+  io_error = 302,  // a file or stream could not be written (the C library's errno tells why)
   // 400..499: misuse / unsupported
   unsupported = 400,
   internal_error = 401,

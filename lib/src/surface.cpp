@@ -620,6 +620,7 @@ const char* status_name(Status s) noexcept {
     case Status::numerical_overflow: return "CYC_E_NUMERICAL_OVERFLOW";
     case Status::buffer_too_small: return "CYC_E_BUFFER_TOO_SMALL";
     case Status::out_of_memory: return "CYC_E_OUT_OF_MEMORY";
+    case Status::io_error: return "CYC_E_IO";
     case Status::unsupported: return "CYC_E_UNSUPPORTED";
     case Status::internal_error: return "CYC_E_INTERNAL";
   }

@@ -50,6 +50,7 @@ enum cyc_status {
 
   CYC_E_BUFFER_TOO_SMALL = 300,  /* caller buffer capacity too small */
   CYC_E_OUT_OF_MEMORY = 301,     /* the allocator returned NULL */
+  CYC_E_IO = 302,                /* a file could not be opened or written */
 
   CYC_E_UNSUPPORTED = 400,       /* feature not built (e.g. no Ceres) */
   CYC_E_INTERNAL = 401           /* a bug in cyclide: please report */
