@@ -943,3 +943,50 @@ TEST(AllocFreeLaguerre, EvaluatorsPatchesAndDesign) {
   cyc_pn_surface_destroy(pn);
   cyc_context_destroy(ctx);
 }
+
+// Issue 9: the tessellation (plan and mesh) and the queries of a Bezier
+// export (its creation allocates, through the context) never allocate.
+TEST(AllocFreeExport, TessellationAndPatchQueries) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, P[3] = {0, 0, 1}, w[3] = {2, 1, 0};
+  cyc_curve *l1 = nullptr, *l2 = nullptr;
+  ASSERT_EQ(cyc_curve_create_line(ctx, O, X, &l1), CYC_OK);
+  ASSERT_EQ(cyc_curve_create_line(ctx, P, w, &l2), CYC_OK);
+  cyc_surface* s = nullptr;
+  ASSERT_EQ(cyc_prcs_create(ctx, l1, l2, nullptr, -0.5, 0.5, &s), CYC_OK);
+  const cyc_export_domain D{-0.5, 0.5, 0, 0, 1};
+  cyc_bezier_export* e = nullptr;
+  ASSERT_EQ(cyc_bezier_export_create(ctx, s, &D, &e), CYC_OK);
+  cyc_tessellation_options o;
+  cyc_tessellation_options_default(&o);
+  o.chordal_tolerance = 1e-3;
+  o.max_segments = 256;
+  std::vector<unsigned char> work(cyc_tessellation_workspace_size(o.max_segments));
+  std::vector<double> us(4096), pts(3 * 4096 * 256), nrm(3 * 4096 * 256);
+  std::vector<double> control(4 * 64 * 3);
+  int bad = 0;
+  cyc_tessellation_plan plan{};
+  const Heap heap = measure([&] {
+    bad += cyc_tessellate_plan(ctx, s, &o, us.data(), 4096, work.data(), work.size(), &plan) !=
+           CYC_OK;
+    size_t singular = 0;
+    bad += cyc_tessellate_eval(ctx, s, &plan, us.data(), cyc_buffer3{pts.data(), 4096 * 256, 3},
+                                 cyc_buffer3{nrm.data(), 4096 * 256, 3}, &singular) != CYC_OK;
+    for (int k = 0; k < cyc_bezier_export_count(e); ++k) {
+      cyc_bezier_patch_info info;
+      double x[3], uv[2];
+      bad += cyc_bezier_export_patch(ctx, e, k, &info, control.data(), control.size()) != CYC_OK;
+      bad += cyc_bezier_export_eval(ctx, e, k, 0.3, 0.6, x, uv) != CYC_OK;
+    }
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(plan.rows, 2);
+  EXPECT_EQ(heap.allocations, 0);
+  EXPECT_EQ(heap.frees, 0);
+  cyc_bezier_export_destroy(e);
+  cyc_surface_destroy(ctx, s);
+  cyc_curve_destroy(ctx, l1);
+  cyc_curve_destroy(ctx, l2);
+  cyc_context_destroy(ctx);
+}

@@ -1917,6 +1917,106 @@ CYC_API int cyc_optimize_cyclide_blend_parameters(cyc_context* ctx, const cyc_li
                                                   int* count);
 
 /* ======================================================================
+ * Export and tessellation (issue 9, SPEC.md §8j): exact rational Bezier
+ * patches of a circle-family surface, and adaptive meshes with a chordal
+ * tolerance. Every output is written only on CYC_OK.
+ * ====================================================================== */
+
+/** Tessellation options (cyc_tessellation_options_default fills them). */
+typedef struct cyc_tessellation_options {
+  double chordal_tolerance; /* > 0, model units (default 1e-3) */
+  int min_segments;         /* arcs per circle, >= 3 (default 8) */
+  int max_segments;         /* <= CYC_MAX_CIRCLE_SEGMENTS (default 1024) */
+  int fixed_segments;       /* > 0: exactly this many arcs (shared joins); 0: from the tolerance */
+  int initial_rows;         /* uniform circles before refinement, >= 2 (default 9) */
+  const double* reference_u0; /* world vectors for the angle 0 at u0 / u1 (NULL: the generator) */
+  const double* reference_u1;
+} cyc_tessellation_options;
+
+/** Largest number of arcs per circle. */
+#define CYC_MAX_CIRCLE_SEGMENTS 4096
+
+/** What the planner chose: rows circles of segments points each. */
+typedef struct cyc_tessellation_plan {
+  int rows;
+  int segments;
+  double phase0, phase1; /* angle offsets at u0 and u1 (radians, about the axis) */
+  double max_radius;
+  int depth_limited;     /* some u-interval reached the halving limit */
+} cyc_tessellation_plan;
+
+CYC_API void cyc_tessellation_options_default(cyc_tessellation_options* options);
+/** Bytes of workspace cyc_tessellate_plan needs for this many arcs (0 if
+ *  out of range). */
+CYC_API size_t cyc_tessellation_workspace_size(int segments);
+/** Chooses the arcs per circle (equal angles, from the largest radius) and
+ *  the circles us[0..plan->rows) (u0 ... u1, halved adaptively until every
+ *  circle at 1/4, 1/2, 3/4 of an interval is within tol/2 of the chords).
+ *  work: at least cyc_tessellation_workspace_size(max_segments or
+ *  fixed_segments) bytes, 8-byte aligned. CYC_E_BUFFER_TOO_SMALL: the work,
+ *  or more than row_cap >= 2 circles are needed (the planner stops there,
+ *  so its work is bounded by row_cap). CYC_E_INVALID_ARGUMENT (options out of range, a
+ *  reference along an end circle's axis), CYC_E_NOT_FINITE, and the
+ *  surface's statuses at a circle. Allocation-free. */
+CYC_API int cyc_tessellate_plan(cyc_context* ctx, const cyc_surface* surface,
+                                const cyc_tessellation_options* options, double* us, int row_cap,
+                                void* work, size_t work_bytes, cyc_tessellation_plan* plan);
+/** The mesh of a plan: point (i, j), the circle us[i] at the angle
+ *  phase(u) + 2 pi j / segments, at index i * segments + j of points and
+ *  normals (either may have data = NULL; capacity >= rows * segments;
+ *  closed in j). Normals at singular points are (0, 0, 0) and counted in
+ *  *singular (may be NULL). Every circle is validated before anything is
+ *  written. Allocation-free. */
+CYC_API int cyc_tessellate_eval(cyc_context* ctx, const cyc_surface* surface,
+                                const cyc_tessellation_plan* plan, const double* us,
+                                cyc_buffer3 points, cyc_buffer3 normals, size_t* singular);
+
+/** The parameter rectangle of an export: u in [u0, u1] inside the
+ *  surface's domain, and v in [v0, v1], or (whole_circle != 0) v over the
+ *  whole circle. */
+typedef struct cyc_export_domain {
+  double u0, u1, v0, v1;
+  int whole_circle;
+} cyc_export_domain;
+
+/** One rational Bezier patch of an export: degrees, the surface parameters
+ *  it covers (with reciprocal_v, 1/v is linear in the local t and v0 or v1
+ *  may be +-infinity). */
+typedef struct cyc_bezier_patch_info {
+  int deg_u, deg_v;
+  double u0, u1, v0, v1;
+  int reciprocal_v;
+} cyc_bezier_patch_info;
+
+/** An exact rational Bezier export (opaque; creation tier: allocated
+ *  through the context, about 15.5 KiB per patch). */
+typedef struct cyc_bezier_export cyc_bezier_export;
+
+/** The tensor-product rational Bezier patches that are the surface over
+ *  the domain (SPEC §8j.1; kinds PRCS, PRRS and ringed; Dupin and parabolic
+ *  surfaces give CYC_E_UNSUPPORTED in this version): weights > 0, each
+ *  patch checked against the evaluator. CYC_E_NOT_FINITE, CYC_E_BAD_DOMAIN,
+ *  CYC_E_DEGREE_TOO_HIGH, CYC_E_POINT_AT_INFINITY (the surface passes
+ *  through infinity in the domain), CYC_E_NUMERICAL_OVERFLOW,
+ *  CYC_E_OUT_OF_MEMORY. *out is written only on success. */
+CYC_API int cyc_bezier_export_create(cyc_context* ctx, const cyc_surface* surface,
+                                     const cyc_export_domain* domain, cyc_bezier_export** out);
+CYC_API void cyc_bezier_export_destroy(cyc_bezier_export* e);
+/** The number of patches (0 for NULL). */
+CYC_API int cyc_bezier_export_count(const cyc_bezier_export* e);
+/** Patch index: its info and (control may be NULL) its homogeneous control
+ *  points control[4 (i (deg_v + 1) + j) + 0..3] = (w, w x, w y, w z), i
+ *  along u; control_cap in doubles, at least 4 (deg_u + 1)(deg_v + 1)
+ *  (else CYC_E_BUFFER_TOO_SMALL with info written). */
+CYC_API int cyc_bezier_export_patch(cyc_context* ctx, const cyc_bezier_export* e, int index,
+                                    cyc_bezier_patch_info* info, double* control,
+                                    size_t control_cap);
+/** The patch index at local (s, t) in [0, 1]^2 (de Casteljau), and the
+ *  surface parameters (u, v) of that point (uv may be NULL). */
+CYC_API int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int index,
+                                   double s, double t, double x[3], double uv[2]);
+
+/* ======================================================================
  * Seed 004: Laguerre geometry, PN surfaces, parabolic Dupin cyclides, design
  * (Peternell-Pottmann, SPEC.md §8i). Plain values, allocation-free unless
  * stated; every output is written only on CYC_OK; NaN, Inf or |x| > 1e100

@@ -1,0 +1,277 @@
+// C ABI of issue 9 (SPEC.md §8j): adaptive tessellation and the exact
+// rational Bezier export of circle-family surfaces.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "capi_internal.hpp"
+#include "cyclide/rational_export.hpp"
+#include "cyclide/tessellate.hpp"
+
+using namespace cyclide;
+using namespace cyclide::capi;
+
+// The export handle: a header and the patches in one allocation.
+struct cyc_bezier_export {
+  cyc_allocator allocator;
+  int count;
+  RationalBezierPatch* patches;  // count entries right after the header
+};
+
+namespace {
+
+static_assert(CYC_MAX_CIRCLE_SEGMENTS == kMaxCircleSegments, "C and C++ bounds differ");
+
+bool bad(double x) { return !(std::abs(x) <= 1e100); }
+
+TessellationOptions core_options(const cyc_tessellation_options& o) {
+  TessellationOptions t;
+  t.chordal_tolerance = o.chordal_tolerance;
+  t.min_segments = o.min_segments;
+  t.max_segments = o.max_segments;
+  t.fixed_segments = o.fixed_segments;
+  t.initial_rows = o.initial_rows;
+  t.reference_u0 = o.reference_u0;
+  t.reference_u1 = o.reference_u1;
+  return t;
+}
+
+Outcome check_options(const char* fn, const cyc_tessellation_options& o) {
+  if (!(o.chordal_tolerance > 0) || bad(o.chordal_tolerance))
+    return fail(std::isnan(o.chordal_tolerance) || std::isinf(o.chordal_tolerance)
+                    ? CYC_E_NOT_FINITE
+                    : CYC_E_INVALID_ARGUMENT,
+                "%s: chordal_tolerance = %.17g is not a positive number", fn,
+                o.chordal_tolerance);
+  if (o.min_segments < 3 || o.max_segments < o.min_segments ||
+      o.max_segments > CYC_MAX_CIRCLE_SEGMENTS)
+    return fail(CYC_E_INVALID_ARGUMENT,
+                "%s: segments must satisfy 3 <= min_segments (%d) <= max_segments (%d) <= %d", fn,
+                o.min_segments, o.max_segments, CYC_MAX_CIRCLE_SEGMENTS);
+  if (o.fixed_segments != 0 && (o.fixed_segments < 3 || o.fixed_segments > CYC_MAX_CIRCLE_SEGMENTS))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: fixed_segments = %d is outside 3..%d", fn,
+                o.fixed_segments, CYC_MAX_CIRCLE_SEGMENTS);
+  if (o.initial_rows < 2 || o.initial_rows > 1 << 16)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: initial_rows = %d is outside 2..65536", fn,
+                o.initial_rows);
+  for (const double* r : {o.reference_u0, o.reference_u1})
+    if (r && (bad(r[0]) || bad(r[1]) || bad(r[2])))
+      return fail(CYC_E_NOT_FINITE, "%s: a reference vector is NaN, infinite or beyond 1e100",
+                  fn);
+  return ok();
+}
+
+std::size_t plan_segments(const cyc_tessellation_options& o) {
+  return std::size_t(o.fixed_segments > 0 ? o.fixed_segments : o.max_segments);
+}
+
+}  // namespace
+
+// ------------------------------------------------------------ tessellation
+
+void cyc_tessellation_options_default(cyc_tessellation_options* options) {
+  if (!options) return;
+  const TessellationOptions t;
+  options->chordal_tolerance = t.chordal_tolerance;
+  options->min_segments = t.min_segments;
+  options->max_segments = t.max_segments;
+  options->fixed_segments = t.fixed_segments;
+  options->initial_rows = t.initial_rows;
+  options->reference_u0 = nullptr;
+  options->reference_u1 = nullptr;
+}
+
+size_t cyc_tessellation_workspace_size(int segments) {
+  return tessellation_workspace_size(segments) * sizeof(double);
+}
+
+int cyc_tessellate_plan(cyc_context* ctx, const cyc_surface* surface,
+                        const cyc_tessellation_options* options, double* us, int row_cap,
+                        void* work, size_t work_bytes, cyc_tessellation_plan* plan) {
+  const char* fn = "cyc_tessellate_plan";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(options);
+    REQUIRE(us);
+    REQUIRE(work);
+    REQUIRE(plan);
+    if (row_cap < 2) return fail(CYC_E_INVALID_ARGUMENT, "%s: row_cap = %d < 2", fn, row_cap);
+    if (Outcome o = check_options(fn, *options); o.status) return o;
+    if (reinterpret_cast<std::uintptr_t>(work) % alignof(double) != 0)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: work is not 8-byte aligned", fn);
+    const std::size_t need = cyc_tessellation_workspace_size(int(plan_segments(*options)));
+    if (work_bytes < need)
+      return fail(CYC_E_BUFFER_TOO_SMALL, "%s: work holds %zu bytes, %zu needed", fn, work_bytes,
+                  need);
+    TessellationPlan P;
+    const Status s = tessellation_plan(surface->surface, core_options(*options), us, row_cap,
+                                       static_cast<double*>(work), work_bytes / sizeof(double), P);
+    if (s == Status::buffer_too_small)
+      return fail(CYC_E_BUFFER_TOO_SMALL,
+                  "%s: more than row_cap = %d circles are needed for chordal tolerance %.3g", fn,
+                  row_cap, options->chordal_tolerance);
+    if (s == Status::invalid_argument)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: a reference vector lies along an end circle's axis",
+                  fn);
+    if (s != Status::ok) return from_core(fn, s);
+    plan->rows = P.rows;
+    plan->segments = P.segments;
+    plan->phase0 = P.phase0;
+    plan->phase1 = P.phase1;
+    plan->max_radius = P.max_radius;
+    plan->depth_limited = P.depth_limited ? 1 : 0;
+    return ok();
+  });
+}
+
+int cyc_tessellate_eval(cyc_context* ctx, const cyc_surface* surface,
+                        const cyc_tessellation_plan* plan, const double* us, cyc_buffer3 points,
+                        cyc_buffer3 normals, size_t* singular) {
+  const char* fn = "cyc_tessellate_eval";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(plan);
+    REQUIRE(us);
+    if (plan->rows < 2 || plan->segments < 3 || plan->segments > CYC_MAX_CIRCLE_SEGMENTS)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: plan has %d rows of %d segments", fn, plan->rows,
+                  plan->segments);
+    if (bad(plan->phase0) || bad(plan->phase1))
+      return fail(CYC_E_NOT_FINITE, "%s: plan phases are not finite", fn);
+    const Surface& S = surface->surface;
+    for (int i = 0; i < plan->rows; ++i)
+      if (!(us[i] >= S.u0 && us[i] <= S.u1))
+        return fail(std::isnan(us[i]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
+                    "%s: us[%d] = %.17g is outside the domain [%.17g, %.17g]", fn, i, us[i], S.u0,
+                    S.u1);
+    const size_t count = size_t(plan->rows) * size_t(plan->segments);
+    if (Outcome o = check_buffer(fn, "points", points, count); o.status) return o;
+    if (Outcome o = check_buffer(fn, "normals", normals, count); o.status) return o;
+    TessellationPlan P;
+    P.rows = plan->rows;
+    P.segments = plan->segments;
+    P.phase0 = plan->phase0;
+    P.phase1 = plan->phase1;
+    const Status s =
+        tessellation_eval(S, P, us, Strided3{points.data, points.stride},
+                          Strided3{normals.data, normals.stride}, singular);
+    return s == Status::ok ? ok() : from_core(fn, s);
+  });
+}
+
+// ------------------------------------------------------------ Bezier export
+
+int cyc_bezier_export_create(cyc_context* ctx, const cyc_surface* surface,
+                             const cyc_export_domain* domain, cyc_bezier_export** out) {
+  const char* fn = "cyc_bezier_export_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(surface);
+    REQUIRE(domain);
+    REQUIRE(out);
+    ExportDomain D = domain->whole_circle
+                         ? ExportDomain::circles(domain->u0, domain->u1)
+                         : ExportDomain::rectangle(domain->u0, domain->u1, domain->v0, domain->v1);
+    const Surface& S = surface->surface;
+    int count = 0;
+    if (Status s = rational_bezier_patch_count(S, D, count); s != Status::ok) {
+      if (s == Status::unsupported)
+        return fail(CYC_E_UNSUPPORTED, "%s: this surface kind has no exact export yet", fn);
+      if (s == Status::bad_domain)
+        return fail(CYC_E_BAD_DOMAIN,
+                    "%s: the rectangle [%.17g, %.17g] x [%.17g, %.17g] is empty or leaves the "
+                    "domain [%.17g, %.17g]",
+                    fn, D.u0, D.u1, D.v0, D.v1, S.u0, S.u1);
+      return from_core(fn, s);
+    }
+    // One block: the header, then the patches (aligned).
+    const std::size_t head =
+        (sizeof(cyc_bezier_export) + alignof(RationalBezierPatch) - 1) /
+        alignof(RationalBezierPatch) * alignof(RationalBezierPatch);
+    if (std::size_t(count) > (std::numeric_limits<std::size_t>::max() - head) /
+                                  sizeof(RationalBezierPatch))
+      return fail(CYC_E_OUT_OF_MEMORY, "%s: %d patches do not fit in memory", fn, count);
+    const std::size_t bytes = head + std::size_t(count) * sizeof(RationalBezierPatch);
+    const cyc_allocator a = ctx->allocator;
+    void* mem = a.alloc(a.userdata, bytes, alignof(RationalBezierPatch));
+    if (!mem) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+    auto* E = new (mem) cyc_bezier_export;
+    E->allocator = a;
+    E->count = count;
+    E->patches = reinterpret_cast<RationalBezierPatch*>(static_cast<char*>(mem) + head);
+    int written = 0;
+    const Status s = export_rational_bezier(S, D, E->patches, count, written);
+    if (s != Status::ok || written != count) {
+      a.free(a.userdata, mem);
+      return s == Status::ok ? fail(CYC_E_INTERNAL, "%s: patch count changed", fn)
+                             : from_core(fn, s);
+    }
+    *out = E;
+    return ok();
+  });
+}
+
+void cyc_bezier_export_destroy(cyc_bezier_export* e) {
+  if (!e) return;
+  const cyc_allocator a = e->allocator;
+  a.free(a.userdata, e);
+}
+
+int cyc_bezier_export_count(const cyc_bezier_export* e) { return e ? e->count : 0; }
+
+namespace {
+Outcome patch_index(const char* fn, const cyc_bezier_export* e, int index) {
+  if (index < 0 || index >= e->count)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: index %d is outside 0..%d", fn, index, e->count - 1);
+  return ok();
+}
+}  // namespace
+
+int cyc_bezier_export_patch(cyc_context* ctx, const cyc_bezier_export* e, int index,
+                            cyc_bezier_patch_info* info, double* control, size_t control_cap) {
+  const char* fn = "cyc_bezier_export_patch";
+  return run(ctx, fn, [&] {
+    REQUIRE(e);
+    REQUIRE(info);
+    if (Outcome o = patch_index(fn, e, index); o.status) return o;
+    const RationalBezierPatch& P = e->patches[index];
+    info->deg_u = P.deg_u;
+    info->deg_v = P.deg_v;
+    info->u0 = P.u0;
+    info->u1 = P.u1;
+    info->v0 = P.v0;
+    info->v1 = P.v1;
+    info->reciprocal_v = P.reciprocal_v ? 1 : 0;
+    const size_t n = size_t(P.deg_u + 1) * size_t(P.deg_v + 1);
+    if (!control) return ok();
+    if (control_cap < 4 * n)
+      return fail(CYC_E_BUFFER_TOO_SMALL, "%s: control holds %zu doubles, %zu needed", fn,
+                  control_cap, 4 * n);
+    for (size_t k = 0; k < n; ++k)
+      for (int c = 0; c < 4; ++c) control[4 * k + c] = P.cp[k][c];
+    return ok();
+  });
+}
+
+int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int index, double s,
+                           double t, double x[3], double uv[2]) {
+  const char* fn = "cyc_bezier_export_eval";
+  return run(ctx, fn, [&] {
+    REQUIRE(e);
+    REQUIRE(x);
+    if (Outcome o = patch_index(fn, e, index); o.status) return o;
+    if (std::isnan(s) || std::isnan(t))
+      return fail(CYC_E_NOT_FINITE, "%s: (s, t) = (%.17g, %.17g) is not a number", fn, s, t);
+    if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1))
+      return fail(CYC_E_BAD_DOMAIN, "%s: (s, t) = (%.17g, %.17g) is outside [0, 1]^2", fn, s, t);
+    const RationalBezierPatch& P = e->patches[index];
+    const Vec3d y = patch_point(P, s, t);
+    if (!std::isfinite(y.x()) || !std::isfinite(y.y()) || !std::isfinite(y.z()))
+      return fail(CYC_E_POINT_AT_INFINITY, "%s: the weight vanishes at (%.17g, %.17g)", fn, s, t);
+    put3(x, y);
+    if (uv) {
+      patch_parameters(P, s, t, uv[0], uv[1]);
+      uv[0] = std::min(std::max(uv[0], P.u0), P.u1);  // u0 + s (u1 - u0) may round past u1
+    }
+    return ok();
+  });
+}

@@ -1,0 +1,261 @@
+// Issue 9 through the C ABI (labels "export;capi"): adaptive tessellation
+// and the exact rational Bezier export. Success paths are checked against
+// cyc_surface_eval; every error path leaves the outputs untouched and names
+// the function in the message; the export handle is allocated through the
+// context's allocator.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "cyclide/cyclide.h"
+
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kPi = 3.14159265358979323846;
+
+template <class T>
+void poison(T& x) {
+  std::memset(static_cast<void*>(&x), 0xA5, sizeof x);
+}
+template <class T>
+bool poisoned(const T& x) {
+  const unsigned char* p = reinterpret_cast<const unsigned char*>(&x);
+  for (size_t i = 0; i < sizeof x; ++i)
+    if (p[i] != 0xA5) return false;
+  return true;
+}
+
+// Counts the allocations made through it.
+struct Counting {
+  int live = 0, total = 0;
+  bool fail = false;
+  static void* alloc(void* self, size_t size, size_t alignment) {
+    auto* c = static_cast<Counting*>(self);
+    if (c->fail) return nullptr;
+    ++c->live;
+    ++c->total;
+    return std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+  }
+  static void release(void* self, void* p) {
+    --static_cast<Counting*>(self)->live;
+    std::free(p);
+  }
+};
+
+class ExportCapi : public ::testing::Test {
+ protected:
+  Counting counting;
+  cyc_context* ctx = nullptr;
+  cyc_curve *l1 = nullptr, *l2 = nullptr;
+  cyc_surface* s = nullptr;  // seed 000 Example 2, u in [-0.5, 0.5]
+
+  void SetUp() override {
+    const cyc_allocator a{&Counting::alloc, &Counting::release, &counting};
+    ASSERT_EQ(cyc_context_create(&a, &ctx), CYC_OK);
+    const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, P[3] = {0, 0, 1}, w[3] = {2, 1, 0};
+    ASSERT_EQ(cyc_curve_create_line(ctx, O, X, &l1), CYC_OK);
+    ASSERT_EQ(cyc_curve_create_line(ctx, P, w, &l2), CYC_OK);
+    ASSERT_EQ(cyc_prcs_create(ctx, l1, l2, nullptr, -0.5, 0.5, &s), CYC_OK);
+  }
+  void TearDown() override {
+    cyc_surface_destroy(ctx, s);
+    cyc_curve_destroy(ctx, l1);
+    cyc_curve_destroy(ctx, l2);
+    cyc_context_destroy(ctx);
+    EXPECT_EQ(counting.live, 0);
+  }
+  void expect_message(const char* fn) {
+    EXPECT_NE(std::strstr(cyc_context_last_error(ctx), fn), nullptr)
+        << cyc_context_last_error(ctx);
+  }
+  void point(double u, double v, double x[3]) {
+    ASSERT_EQ(cyc_surface_eval(ctx, s, u, v, x, nullptr, nullptr, nullptr), CYC_OK);
+  }
+};
+
+// The mesh: rows from u0 to u1, equal angles on every circle (consecutive
+// points of a row equally far apart), every point on the surface.
+TEST_F(ExportCapi, TessellationOfExample2) {
+  cyc_tessellation_options o;
+  cyc_tessellation_options_default(&o);
+  EXPECT_EQ(o.chordal_tolerance, 1e-3);
+  EXPECT_EQ(o.min_segments, 8);
+  o.chordal_tolerance = 1e-3;
+  std::vector<unsigned char> work(cyc_tessellation_workspace_size(o.max_segments));
+  std::vector<double> us(1000);
+  cyc_tessellation_plan plan;
+  ASSERT_EQ(cyc_tessellate_plan(ctx, s, &o, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_OK);
+  ASSERT_GE(plan.rows, 9);
+  EXPECT_EQ(us[0], -0.5);
+  EXPECT_EQ(us[plan.rows - 1], 0.5);
+  const size_t n = size_t(plan.rows) * plan.segments;
+  std::vector<double> pts(3 * n), nrm(3 * n);
+  size_t singular = 7;
+  ASSERT_EQ(cyc_tessellate_eval(ctx, s, &plan, us.data(), cyc_buffer3{pts.data(), n, 3},
+                                  cyc_buffer3{nrm.data(), n, 3}, &singular),
+            CYC_OK);
+  EXPECT_EQ(singular, 0u);
+  const int N = plan.segments;
+  for (int i = 0; i < plan.rows; i += 3) {
+    const double* row = &pts[3 * size_t(i) * N];
+    const auto dist = [&](int a, int b) {
+      const double d[3] = {row[3 * a] - row[3 * b], row[3 * a + 1] - row[3 * b + 1],
+                           row[3 * a + 2] - row[3 * b + 2]};
+      return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    };
+    for (int j = 1; j < N; ++j) EXPECT_NEAR(dist(j - 1, j), dist(N - 1, 0), 1e-12);
+    // The circle's radius from its chord: 2 r sin(pi / N).
+    const double chord = dist(0, 1);
+    EXPECT_NEAR(chord, 2 * std::sin(kPi / N) * plan.max_radius, plan.max_radius);
+  }
+}
+
+TEST_F(ExportCapi, TessellationStatusesLeaveOutputsUntouched) {
+  cyc_tessellation_options o;
+  cyc_tessellation_options_default(&o);
+  std::vector<unsigned char> work(cyc_tessellation_workspace_size(o.max_segments) + 8);
+  std::vector<double> us(1000);
+  cyc_tessellation_plan plan;
+  poison(plan);
+  EXPECT_EQ(cyc_tessellate_plan(ctx, nullptr, &o, us.data(), 1000, work.data(), work.size(),
+                                  &plan),
+            CYC_E_NULL_ARGUMENT);
+  expect_message("cyc_tessellate_plan");
+  cyc_tessellation_options b = o;
+  b.chordal_tolerance = kNaN;
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &b, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_E_NOT_FINITE);
+  b = o;
+  b.chordal_tolerance = -1;
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &b, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_E_INVALID_ARGUMENT);
+  b = o;
+  b.max_segments = CYC_MAX_CIRCLE_SEGMENTS + 1;
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &b, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_E_INVALID_ARGUMENT);
+  const double across[3] = {1, 0, 0};  // not along the end circle's axis
+  cyc_circle circle;
+  ASSERT_EQ(cyc_surface_circle(ctx, s, -0.5, &circle), CYC_OK);
+  b = o;
+  b.reference_u0 = circle.normal;
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &b, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_E_INVALID_ARGUMENT);
+  b.reference_u0 = across;
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &b, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_OK);
+  poison(plan);
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &o, us.data(), 1000, work.data(), 16, &plan),
+            CYC_E_BUFFER_TOO_SMALL);
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &o, us.data(), 1000, work.data() + 1, work.size() - 8,
+                                  &plan),
+            CYC_E_INVALID_ARGUMENT);  // misaligned work
+  b = o;
+  b.chordal_tolerance = 1e-7;
+  EXPECT_EQ(cyc_tessellate_plan(ctx, s, &b, us.data(), 5, work.data(), work.size(), &plan),
+            CYC_E_BUFFER_TOO_SMALL);
+  expect_message("row_cap");
+  EXPECT_TRUE(poisoned(plan));
+
+  ASSERT_EQ(cyc_tessellate_plan(ctx, s, &o, us.data(), 1000, work.data(), work.size(), &plan),
+            CYC_OK);
+  const size_t count = size_t(plan.rows) * plan.segments;
+  std::vector<double> pts(3 * count, 0.25);
+  EXPECT_EQ(cyc_tessellate_eval(ctx, s, &plan, us.data(), cyc_buffer3{pts.data(), count - 1, 3},
+                                  cyc_buffer3{nullptr, 0, 3}, nullptr),
+            CYC_E_BUFFER_TOO_SMALL);
+  us[1] = 7;
+  EXPECT_EQ(cyc_tessellate_eval(ctx, s, &plan, us.data(), cyc_buffer3{pts.data(), count, 3},
+                                  cyc_buffer3{nullptr, 0, 3}, nullptr),
+            CYC_E_BAD_DOMAIN);
+  expect_message("cyc_tessellate_eval");
+  for (double x : pts) ASSERT_EQ(x, 0.25);
+}
+
+// The export reproduces the evaluator at the patches' own (u, v), over a
+// rectangle and over the whole circle; control points and infos agree
+// with the evaluations.
+TEST_F(ExportCapi, BezierExportAgreesWithTheEvaluator) {
+  for (const cyc_export_domain D : {cyc_export_domain{-0.5, 0.3, -2, 0.5, 0},
+                                    cyc_export_domain{-0.5, 0.5, 0, 0, 1}}) {
+    const int before = counting.total, live = counting.live;
+    cyc_bezier_export* e = nullptr;
+    ASSERT_EQ(cyc_bezier_export_create(ctx, s, &D, &e), CYC_OK);
+    EXPECT_EQ(counting.total, before + 1);  // one block through the context
+    const int n = cyc_bezier_export_count(e);
+    ASSERT_GE(n, D.whole_circle ? 4 : 1);
+    for (int k = 0; k < n; ++k) {
+      cyc_bezier_patch_info info;
+      ASSERT_EQ(cyc_bezier_export_patch(ctx, e, k, &info, nullptr, 0), CYC_OK);
+      EXPECT_EQ(info.deg_v, 2);
+      std::vector<double> control(4 * (info.deg_u + 1) * (info.deg_v + 1));
+      ASSERT_EQ(cyc_bezier_export_patch(ctx, e, k, &info, control.data(), control.size()),
+                CYC_OK);
+      for (size_t i = 0; i < control.size(); i += 4) EXPECT_GT(control[i], 0);  // weights
+      for (double S : {0.0, 0.37, 1.0})
+        for (double T : {0.0, 0.61, 1.0}) {
+          double x[3], uv[2], y[3];
+          ASSERT_EQ(cyc_bezier_export_eval(ctx, e, k, S, T, x, uv), CYC_OK);
+          EXPECT_GE(uv[0], info.u0);
+          EXPECT_LE(uv[0], info.u1);
+          point(uv[0], std::isinf(uv[1]) ? std::copysign(1e300, uv[1]) : uv[1], y);
+          for (int c = 0; c < 3; ++c) EXPECT_NEAR(x[c], y[c], 1e-12 * (1 + std::fabs(y[c])));
+        }
+      // The corner control point is the corner point (s, t) = (0, 0).
+      double x[3];
+      ASSERT_EQ(cyc_bezier_export_eval(ctx, e, k, 0, 0, x, nullptr), CYC_OK);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(control[1 + c] / control[0], x[c], 1e-13);
+    }
+    cyc_bezier_export_destroy(e);
+    EXPECT_EQ(counting.live, live);  // the block is released
+  }
+}
+
+TEST_F(ExportCapi, BezierExportStatuses) {
+  cyc_bezier_export* out = reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed));
+  const cyc_export_domain bad_u{-0.6, 0.5, 0, 1, 0}, nan_u{kNaN, 0.5, 0, 1, 0},
+      empty_v{-0.5, 0.5, 1, 1, 0};
+  EXPECT_EQ(cyc_bezier_export_create(ctx, s, &bad_u, &out), CYC_E_BAD_DOMAIN);
+  expect_message("cyc_bezier_export_create");
+  EXPECT_EQ(cyc_bezier_export_create(ctx, s, &nan_u, &out), CYC_E_NOT_FINITE);
+  EXPECT_EQ(cyc_bezier_export_create(ctx, s, &empty_v, &out), CYC_E_BAD_DOMAIN);
+  EXPECT_EQ(cyc_bezier_export_create(ctx, s, nullptr, &out), CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(out, reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed)));
+  EXPECT_EQ(cyc_bezier_export_count(nullptr), 0);
+  cyc_bezier_export_destroy(nullptr);
+
+  const cyc_export_domain D{-0.5, 0.5, 0, 1, 0};
+  cyc_bezier_export* e = nullptr;
+  ASSERT_EQ(cyc_bezier_export_create(ctx, s, &D, &e), CYC_OK);
+  cyc_bezier_patch_info info;
+  poison(info);
+  EXPECT_EQ(cyc_bezier_export_patch(ctx, e, cyc_bezier_export_count(e), &info, nullptr, 0),
+            CYC_E_INVALID_ARGUMENT);
+  EXPECT_TRUE(poisoned(info));
+  double small[4] = {9, 9, 9, 9};
+  EXPECT_EQ(cyc_bezier_export_patch(ctx, e, 0, &info, small, 4), CYC_E_BUFFER_TOO_SMALL);
+  EXPECT_EQ(small[0], 9);
+  EXPECT_EQ(info.deg_v, 2);  // the sizes needed are reported
+  double x[3] = {5, 5, 5};
+  EXPECT_EQ(cyc_bezier_export_eval(ctx, e, 0, 1.5, 0, x, nullptr), CYC_E_BAD_DOMAIN);
+  EXPECT_EQ(cyc_bezier_export_eval(ctx, e, 0, kNaN, 0, x, nullptr), CYC_E_NOT_FINITE);
+  EXPECT_EQ(cyc_bezier_export_eval(ctx, e, -1, 0, 0, x, nullptr), CYC_E_INVALID_ARGUMENT);
+  expect_message("cyc_bezier_export_eval");
+  EXPECT_EQ(x[0], 5);
+  cyc_bezier_export_destroy(e);
+
+  // The context's allocator fails: CYC_E_OUT_OF_MEMORY, *out untouched.
+  counting.fail = true;
+  out = reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed));
+  EXPECT_EQ(cyc_bezier_export_create(ctx, s, &D, &out), CYC_E_OUT_OF_MEMORY);
+  EXPECT_EQ(out, reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed)));
+  counting.fail = false;
+}
+
+}  // namespace
