@@ -42,8 +42,9 @@ inline namespace v0 {
 // Largest number of arcs per circle.
 constexpr int kMaxCircleSegments = 4096;
 // Largest halving depth of a u-interval (the rows then stand 2^-depth of
-// the initial spacing apart).
-constexpr int kMaxTessellationDepth = 24;
+// the initial spacing apart). The planner's scratch holds two circles per
+// depth.
+constexpr int kMaxTessellationDepth = 16;
 
 struct TessellationOptions {
   double chordal_tolerance = 1e-3;  // > 0, model units

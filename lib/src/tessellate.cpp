@@ -10,7 +10,6 @@ inline namespace v0 {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kRowChecks = 3;  // interior rows checked per interval: 1/4, 1/2, 3/4
 constexpr int kChunkPoints = 64;
 
 // The circle parameter of the angle theta about a from the generator, for
@@ -76,24 +75,28 @@ Status reference_phase(const Surface& s, double u, const double* ref, double& ph
   return Status::ok;
 }
 
+// The rows are halved depth first. An interval [ua, ub] is checked with
+// its end circles A, B and middle circle M (given by the caller) and its
+// quarter circles Q1, Q3 (computed here, kept in the buffers of its depth):
+// its halves reuse A, Q1, M and M, Q3, B, so each check evaluates only two
+// new circles.
 struct Planner {
   const Surface& s;
   const TessellationPlan& plan;
   double tol;  // half the chordal tolerance: the u-direction's share
-  int m;       // angles checked per row (2 N: the mesh angles and halfway)
-  double* row[kRowChecks + 2];
+  int m;       // angles per circle (2 N: the mesh angles and halfway)
+  double* work;
   double* us;
   int row_cap;
   int count = 0;
   bool depth_limited = false;
 
-  Status rows_at(const double (&u)[kRowChecks + 2]) {
-    for (int k = 0; k < kRowChecks + 2; ++k)
-      if (Status st = circle_points(s, u[k], phase_at(s, plan, u[k]), m, Strided3{row[k], 3},
-                                    Strided3{}, nullptr);
-          st != Status::ok)
-        return st;
-    return Status::ok;
+  // Circle buffer k (3 m doubles each): 0..2 for the initial rows, then
+  // two per depth.
+  double* buffer(int k) const { return work + std::size_t(k) * 3 * m; }
+
+  Status circle_at(double u, double* out) const {
+    return circle_points(s, u, phase_at(s, plan, u), m, Strided3{out, 3}, Strided3{}, nullptr);
   }
 
   // Rows beyond row_cap stop the planner (buffer_too_small): the work
@@ -104,32 +107,48 @@ struct Planner {
     return Status::ok;
   }
 
-  // Halve [ua, ub] while a row at 1/4, 1/2 or 3/4 strays more than tol from
-  // the chords between the end rows (same angle index: the phases are
-  // linear in u, so the chord joins corresponding points).
-  Status refine(double ua, double ub, int depth) {
-    const double h = ub - ua;
-    const double u[kRowChecks + 2] = {ua, ub, ua + 0.25 * h, ua + 0.5 * h, ua + 0.75 * h};
-    if (Status st = rows_at(u); st != Status::ok) return st;
+  // The largest distance of the circle at fraction t from the chords A-B
+  // (same angle index: the phases are linear in u, so the chords join
+  // corresponding points).
+  double deviation(const double* A, const double* B, const double* X, double t) const {
     double dev = 0;
-    for (int k = 0; k < kRowChecks; ++k) {
-      const double t = 0.25 * (k + 1);
-      for (int j = 0; j < m; ++j)
-        for (int c = 0; c < 3; ++c) {
-          const double chord = (1 - t) * row[0][3 * j + c] + t * row[1][3 * j + c];
-          dev = std::max(dev, std::abs(row[2 + k][3 * j + c] - chord));
-        }
-    }
+    for (int i = 0; i < 3 * m; ++i) dev = std::max(dev, std::abs(X[i] - ((1 - t) * A[i] + t * B[i])));
+    return dev;
+  }
+
+  // Halve [ua, ub] while its circle at 1/4, 1/2 or 3/4 strays more than tol
+  // from the chords between its end circles.
+  Status refine(double ua, double ub, const double* A, const double* B, const double* M,
+                int depth) {
+    const double h = ub - ua, um = ua + 0.5 * h;
+    double* Q1 = buffer(3 + 2 * depth);
+    double* Q3 = buffer(4 + 2 * depth);
+    if (Status st = circle_at(ua + 0.25 * h, Q1); st != Status::ok) return st;
+    if (Status st = circle_at(ua + 0.75 * h, Q3); st != Status::ok) return st;
+    const double dev = std::max({deviation(A, B, Q1, 0.25), deviation(A, B, M, 0.5),
+                                 deviation(A, B, Q3, 0.75)});
     if (!(dev == dev)) return Status::numerical_overflow;  // NaN
     if (dev <= tol) return Status::ok;
     if (depth >= kMaxTessellationDepth) {
       depth_limited = true;
       return Status::ok;
     }
-    const double um = ua + 0.5 * h;
-    if (Status st = refine(ua, um, depth + 1); st != Status::ok) return st;
+    if (Status st = refine(ua, um, A, M, Q1, depth + 1); st != Status::ok) return st;
     if (Status st = emit(um); st != Status::ok) return st;
-    return refine(um, ub, depth + 1);
+    return refine(um, ub, M, B, Q3, depth + 1);
+  }
+
+  // One initial interval: its end and middle circles into buffers 0..2
+  // (the end circle of one interval is recomputed as the start of the
+  // next: one circle per interval).
+  Status interval(double ua, double ub) {
+    double* A = buffer(0);
+    double* B = buffer(1);
+    double* M = buffer(2);
+    if (Status st = circle_at(ua, A); st != Status::ok) return st;
+    if (Status st = circle_at(ub, B); st != Status::ok) return st;
+    if (Status st = circle_at(0.5 * (ua + ub), M); st != Status::ok) return st;
+    return refine(ua, ub, A, B, M, 0);
   }
 };
 
@@ -145,7 +164,8 @@ bool options_ok(const TessellationOptions& o) {
 
 std::size_t tessellation_workspace_size(int segments) noexcept {
   if (segments < 3 || segments > kMaxCircleSegments) return 0;
-  return std::size_t(kRowChecks + 2) * 2 * std::size_t(segments) * 3;
+  // Three circles of the initial interval and two per depth, of 2N points.
+  return std::size_t(3 + 2 * (kMaxTessellationDepth + 1)) * 2 * std::size_t(segments) * 3;
 }
 
 Status circle_parameter_at_angle(const Surface& s, double u, double theta, double& v) noexcept {
@@ -194,14 +214,13 @@ Status tessellation_plan(const Surface& s, const TessellationOptions& options, d
   if (r1 && !r0) P.phase0 = P.phase1;
   P.phase1 = P.phase0 + std::remainder(P.phase1 - P.phase0, 2 * kPi);
 
-  Planner pl{s, P, half_tol, 2 * P.segments, {}, us, row_cap};
-  for (int k = 0; k < kRowChecks + 2; ++k) pl.row[k] = work + std::size_t(k) * 3 * pl.m;
+  Planner pl{s, P, half_tol, 2 * P.segments, work, us, row_cap};
   const int K = options.initial_rows;
   Status st = pl.emit(s.u0);
   for (int i = 0; i + 1 < K && st == Status::ok; ++i) {
     const double ua = s.u0 + (s.u1 - s.u0) * i / (K - 1);
     const double ub = i + 2 == K ? s.u1 : s.u0 + (s.u1 - s.u0) * (i + 1) / (K - 1);
-    st = pl.refine(ua, ub, 0);
+    st = pl.interval(ua, ub);
     if (st == Status::ok) st = pl.emit(ub);
   }
   if (st != Status::ok && st != Status::buffer_too_small) return st;
