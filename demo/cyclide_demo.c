@@ -5,10 +5,13 @@
  *
  *   cyclide_demo OUT_DIR
  */
+#define _POSIX_C_SOURCE 200809L /* mkdir */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "cyclide/cyclide.h"
@@ -56,6 +59,65 @@ static FILE* open_out(const char* dir, const char* name) {
   return f;
 }
 
+/* ---- the gallery: every mesh is kept (a copy) and written at the end as
+ * glTF binary (models/NAME.glb, through cyc_mesh_write), with scenes that
+ * join several meshes (welded where they share circles), and described in
+ * gallery.json with the report lines of its section (scripts/gallery
+ * renders and shows them). */
+#define MAX_MESHES 128
+#define MAX_SCENE_PARTS 16
+typedef struct {
+  char name[64];
+  double *pts, *nrm;
+  cyc_grid_mesh* grids; /* one grid, or one per patch of a patchwork */
+  int ngrids;
+} demo_mesh;
+static demo_mesh g_meshes[MAX_MESHES];
+static int g_nmeshes;
+
+static double* copy_doubles(const double* x, size_t n) {
+  double* y = (double*)malloc(n * sizeof *y);
+  if (!y) {
+    fprintf(stderr, "out of memory\n");
+    exit(1);
+  }
+  memcpy(y, x, n * sizeof *y);
+  return y;
+}
+
+/* Keeps a mesh of ngrids grids of rows x cols points stored one after the
+ * other in pts / nrm (nrm may be NULL). */
+static void keep_mesh(const char* name, const double* pts, const double* nrm, int ngrids,
+                      int rows, int cols, int closed) {
+  demo_mesh* m;
+  const size_t n = (size_t)ngrids * rows * cols * 3;
+  int k;
+  if (g_nmeshes == MAX_MESHES) return;
+  m = &g_meshes[g_nmeshes++];
+  snprintf(m->name, sizeof m->name, "%s", name);
+  m->pts = copy_doubles(pts, n);
+  m->nrm = nrm ? copy_doubles(nrm, n) : NULL;
+  m->ngrids = ngrids;
+  m->grids = (cyc_grid_mesh*)malloc(ngrids * sizeof *m->grids);
+  if (!m->grids) exit(1);
+  for (k = 0; k < ngrids; ++k) {
+    const size_t off = (size_t)k * rows * cols * 3;
+    m->grids[k].points = m->pts + off;
+    m->grids[k].normals = m->nrm ? m->nrm + off : NULL;
+    m->grids[k].stride = 3;
+    m->grids[k].rows = rows;
+    m->grids[k].cols = cols;
+    m->grids[k].closed = closed;
+  }
+}
+
+static const demo_mesh* find_mesh(const char* name) {
+  int i;
+  for (i = 0; i < g_nmeshes; ++i)
+    if (strcmp(g_meshes[i].name, name) == 0) return &g_meshes[i];
+  return NULL;
+}
+
 /* Uniform angles on every circle: rotate the point at v = 1e300 (the
  * generator p1(u), f = infinity) about the circle's axis and ask the surface
  * for the parameter v of each rotated point. */
@@ -101,6 +163,7 @@ static void write_mesh(const char* dir, const char* name, const double* pts, con
     }
   fclose(f);
   fprintf(report, "  wrote %s/%s\n", dir, file);
+  keep_mesh(name, pts, nrm, 1, NU, NV, 1);
 }
 
 /* Mesh the surface (closed in v) and report the implicit residual. */
@@ -1104,6 +1167,7 @@ static void write_grid(const char* dir, const char* name, const double* pts, con
     }
   fclose(f);
   fprintf(report, "  wrote %s/%s\n", dir, file);
+  keep_mesh(name, pts, nrm, 1, nu, nv, 0);
 }
 
 /* Bernstein coefficients of u^k in degree 3: C(i, k) / C(3, k). */
@@ -1284,6 +1348,28 @@ static double normal_check(cyc_context* ctx, const cyc_quadratic_graph_triangle*
   return norm3(m) / norm3(w);
 }
 
+/* Keeps the patchwork for the gallery: each cubic triangle as a
+ * (TESS + 1) x (TESS + 1) grid over the collapsed square (s, t) ->
+ * barycentrics (1 - s, s (1 - t), s t), whose first row is one point. */
+static void keep_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
+                           const cyc_rational_cubic_triangle* patches, int np, const char* name) {
+  const int n = TESS + 1;
+  double *pts = (double*)malloc((size_t)np * n * n * 3 * sizeof(double)),
+         *nrm = (double*)malloc((size_t)np * n * n * 3 * sizeof(double));
+  int k, i, j;
+  if (!pts || !nrm) exit(1);
+  for (k = 0; k < np; ++k)
+    for (i = 0; i < n; ++i)
+      for (j = 0; j < n; ++j) {
+        const double S = (double)i / TESS, T = (double)j / TESS;
+        const size_t at = 3 * (((size_t)k * n + i) * n + j);
+        patch_point(ctx, iso + k, patches + k, 1 - S, S * (1 - T), S * T, pts + at, nrm + at);
+      }
+  keep_mesh(name, pts, nrm, np, n, n, 0);
+  free(pts);
+  free(nrm);
+}
+
 static void write_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
                             const cyc_rational_cubic_triangle* patches, int np, const char* dir,
                             const char* name, FILE* report) {
@@ -1320,6 +1406,7 @@ static void write_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle
   }
   fclose(f);
   fprintf(report, "  wrote %s/%s\n", dir, file);
+  keep_patchwork(ctx, iso, patches, np, name);
 }
 
 /* Across every interior edge of the patchwork: the largest gap between
@@ -1443,6 +1530,271 @@ static void laguerre_demos(cyc_context* ctx, const char* dir, FILE* report) {
   design_demo(ctx, dir, report);
 }
 
+/* ---- gallery.json and the glb files (see keep_mesh) */
+
+typedef struct {
+  const char* name;
+  const char* title;
+  const char* parts[MAX_SCENE_PARTS];
+} demo_scene;
+
+/* Scenes: meshes shown together (the joins of blends, chains, patchworks). */
+static const demo_scene kScenes[] = {
+    {"scene_blend_ringed_c1", "C1 ringed blend of the cones of Fig. 6",
+     {"blend_cone_a", "blend_ringed_k1", "blend_cone_b"}},
+    {"scene_blend_canal_g1", "G1 canal blend of the cones of Fig. 6",
+     {"blend_cone_a", "blend_canal_k2", "blend_cone_b"}},
+    {"scene_blend_obstacle", "C2 ringed blend moved around a spherical obstacle (Ceres)",
+     {"blend_cone_a", "blend_ringed_k2_optimized", "blend_cone_b", "blend_obstacle"}},
+    {"scene_nway_ex62", "3-way ringed blend of Example 6.2 through an auxiliary sphere",
+     {"ringed_ex62_R1", "ringed_ex62_R2", "ringed_ex62_R3", "ringed_ex62_B1", "ringed_ex62_B2",
+      "ringed_ex62_B3"}},
+    {"scene_implicit_ex76", "Example 7.6: implicit blend of two cylinders by two ringed pieces",
+     {"implicit_ex76_2piece_0", "implicit_ex76_2piece_1"}},
+    {"scene_skin_rmf", "Rotation-minimizing skin of two spheres (seed 002)",
+     {"skin_sphere0", "skin_rmf", "skin_sphere1"}},
+    {"scene_skin_chain", "Sphere-chain skin on a helix (seed 002)",
+     {"skin_chain_sphere0", "skin_chain_patch0", "skin_chain_sphere1", "skin_chain_patch1",
+      "skin_chain_sphere2", "skin_chain_patch2", "skin_chain_sphere3", "skin_chain_patch3",
+      "skin_chain_sphere4"}},
+    {"scene_dupin_torus", "Dupin cyclide of three spheres (seed 003 Algorithm 1): a torus",
+     {"dupin_torus_inner", "dupin_torus_outer"}},
+    {"scene_cyclide_elbow", "Single cyclide blend of two cylinders (seed 003 Algorithm 2)",
+     {"cyclide_elbow_cone_r", "cyclide_elbow_piece0", "cyclide_elbow_cone_s"}},
+    {"scene_cyclide_double", "Double cyclide blend of a cylinder and a cone (seed 003 Algorithm 2)",
+     {"cyclide_double_cone_r", "cyclide_double_piece0", "cyclide_double_piece1",
+      "cyclide_double_cone_s"}},
+    {"scene_pn_offsets", "PN surface and its exact offsets at +-0.5 (seed 004 Thm. 3.2)",
+     {"pn_surface_offset_minus", "pn_surface", "pn_surface_offset_plus"}},
+};
+
+/* A report section: its header line and its other lines (without the
+ * "wrote" lines). */
+typedef struct {
+  char* header;
+  char* body;
+} demo_section;
+
+static int in_scene(const char* name) {
+  size_t i;
+  int k;
+  for (i = 0; i < sizeof kScenes / sizeof kScenes[0]; ++i)
+    for (k = 0; k < MAX_SCENE_PARTS && kScenes[i].parts[k]; ++k)
+      if (strcmp(kScenes[i].parts[k], name) == 0) return 1;
+  return 0;
+}
+
+static void json_string(FILE* f, const char* s) {
+  fputc('"', f);
+  for (; *s; ++s) {
+    const unsigned char c = (unsigned char)*s;
+    if (c == '"' || c == '\\')
+      fprintf(f, "\\%c", c);
+    else if (c < 0x20)
+      fprintf(f, "\\u%04x", c);
+    else
+      fputc(c, f);
+  }
+  fputc('"', f);
+}
+
+/* The seed a section belongs to, from its header. */
+static const char* seed_of(const char* header) {
+  static const char* seeds[] = {"001", "002", "003", "004"};
+  size_t i;
+  for (i = 0; i < 4; ++i) {
+    char a[16], b[16];
+    snprintf(a, sizeof a, "eed %s", seeds[i]);
+    snprintf(b, sizeof b, "seed %s", seeds[i]);
+    if (strstr(header, a) || strstr(header, b)) return seeds[i];
+  }
+  if (strstr(header, "(seed 001") || strstr(header, "seed 001")) return "001";
+  return "000";
+}
+
+static char* copy_text(const char* t) {
+  char* c = (char*)malloc(strlen(t) + 1);
+  if (!c) exit(1);
+  strcpy(c, t);
+  return c;
+}
+
+/* body + line + newline (body is released). */
+static char* append_line(char* body, const char* line) {
+  const size_t a = strlen(body), b = strlen(line);
+  char* c = (char*)realloc(body, a + b + 2);
+  if (!c) exit(1);
+  memcpy(c + a, line, b);
+  c[a + b] = '\n';
+  c[a + b + 1] = '\0';
+  return c;
+}
+
+static void make_dir(const char* path) {
+  if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+    perror(path);
+    exit(1);
+  }
+}
+
+/* Reads the report into sections; model_section[i] receives the section of
+ * g_meshes[i] (-1 if none). Returns the number of sections. */
+static int read_sections(const char* path, demo_section* sec, int cap, int* model_section) {
+  FILE* f = fopen(path, "r");
+  char line[4096];
+  int n = 0, i;
+  for (i = 0; i < g_nmeshes; ++i) model_section[i] = -1;
+  if (!f) return 0;
+  while (fgets(line, sizeof line, f)) {
+    size_t len = strlen(line);
+    while (len && (line[len - 1] == '\n' || line[len - 1] == '\r')) line[--len] = '\0';
+    if (len == 0) continue;
+    if (line[0] != ' ') {
+      if (n == cap) break;
+      sec[n].header = copy_text(line);
+      sec[n].body = copy_text("");
+      ++n;
+      continue;
+    }
+    if (n == 0) continue;
+    if (strncmp(line, "  wrote ", 8) == 0) {
+      const char* slash = strrchr(line, '/');
+      char name[256];
+      size_t k = 0;
+      if (!slash) continue;
+      for (++slash; *slash && *slash != '.' && k + 1 < sizeof name; ++slash) name[k++] = *slash;
+      name[k] = '\0';
+      for (i = 0; i < g_nmeshes; ++i)
+        if (strcmp(g_meshes[i].name, name) == 0) model_section[i] = n - 1;
+      continue;
+    }
+    sec[n - 1].body = append_line(sec[n - 1].body, line + 2);
+  }
+  fclose(f);
+  return n;
+}
+
+/* The lines of body as JSON strings separated by commas. */
+static void json_lines_inner(FILE* f, const char* body) {
+  const char* p = body;
+  int first = 1;
+  while (*p) {
+    const char* e = strchr(p, '\n');
+    char line[4096];
+    size_t len = e ? (size_t)(e - p) : strlen(p);
+    if (len >= sizeof line) len = sizeof line - 1;
+    memcpy(line, p, len);
+    line[len] = '\0';
+    if (!first) fputc(',', f);
+    json_string(f, line);
+    first = 0;
+    p += len;
+    if (*p == '\n') ++p;
+  }
+}
+
+/* One glb of grids; prints the weld statistics into stats_line. */
+static void write_glb(cyc_context* ctx, const char* dir, const char* name, const cyc_grid_mesh* g,
+                      int n, char* stats_line, size_t stats_size) {
+  char path[1024];
+  cyc_mesh_write_options o;
+  cyc_mesh_stats st;
+  o.weld_tolerance = -1;
+  o.name = name;
+  snprintf(path, sizeof path, "%s/gallery/models/%s.glb", dir, name);
+  check(ctx, cyc_mesh_write(ctx, path, CYC_MESH_GLB, g, n, &o, &st), "cyc_mesh_write");
+  snprintf(stats_line, stats_size,
+           "mesh: %zu vertices, %zu triangles, %d grids, %d rows welded across joins",
+           st.vertices, st.triangles, n, st.welded_rows);
+}
+
+static void write_gallery(cyc_context* ctx, const char* dir, const char* report_path) {
+  static demo_section sec[256];
+  static int model_section[MAX_MESHES];
+  static cyc_grid_mesh grids[1024];
+  char path[1024], stats[256];
+  const int nsec = read_sections(report_path, sec, 256, model_section);
+  FILE* f;
+  size_t i;
+  int m, k, first = 1;
+  snprintf(path, sizeof path, "%s/gallery", dir);
+  make_dir(path);
+  snprintf(path, sizeof path, "%s/gallery/models", dir);
+  make_dir(path);
+  snprintf(path, sizeof path, "%s/gallery/gallery.json", dir);
+  f = fopen(path, "w");
+  if (!f) {
+    perror(path);
+    exit(1);
+  }
+  fprintf(f, "{\"title\": \"cyclide %s demo gallery\", \"generated\": ", cyc_version_string());
+  json_string(f, "scripts/demo (demo/cyclide_demo.c through the C ABI)");
+  fprintf(f, ",\n \"models\": [");
+  /* Scenes first, then the meshes shown on their own. */
+  for (i = 0; i < sizeof kScenes / sizeof kScenes[0]; ++i) {
+    const demo_scene* S = &kScenes[i];
+    int n = 0, shown[MAX_SCENE_PARTS], ns = 0, j;
+    for (k = 0; k < MAX_SCENE_PARTS && S->parts[k]; ++k) {
+      const demo_mesh* M = find_mesh(S->parts[k]);
+      if (!M) continue;
+      if (n + M->ngrids > 1024) {
+        fprintf(stderr, "gallery: scene %s has more than 1024 grids\n", S->name);
+        exit(1);
+      }
+      for (m = 0; m < M->ngrids; ++m) grids[n++] = M->grids[m];
+      m = (int)(M - g_meshes);
+      if (model_section[m] < 0) continue;
+      for (j = 0; j < ns && shown[j] != model_section[m]; ++j) continue;
+      if (j == ns) shown[ns++] = model_section[m];
+    }
+    if (n == 0) continue;
+    write_glb(ctx, dir, S->name, grids, n, stats, sizeof stats);
+    fprintf(f, "%s\n  {\"name\": ", first ? "" : ",");
+    first = 0;
+    json_string(f, S->name);
+    fprintf(f, ", \"title\": ");
+    json_string(f, S->title);
+    fprintf(f, ", \"seed\": ");
+    json_string(f, ns ? seed_of(sec[shown[0]].header) : "000");
+    fprintf(f, ", \"section\": ");
+    json_string(f, ns ? sec[shown[0]].header : "");
+    fprintf(f, ", \"glb\": \"models/%s.glb\", \"residuals\": [", S->name);
+    json_string(f, stats);
+    for (j = 0; j < ns; ++j) {
+      fputc(',', f);
+      json_lines_inner(f, sec[shown[j]].body);
+    }
+    fprintf(f, "]}");
+  }
+  for (m = 0; m < g_nmeshes; ++m) {
+    const demo_mesh* M = &g_meshes[m];
+    const int s = model_section[m];
+    if (in_scene(M->name)) continue;
+    write_glb(ctx, dir, M->name, M->grids, M->ngrids, stats, sizeof stats);
+    fprintf(f, ",\n  {\"name\": ");
+    json_string(f, M->name);
+    fprintf(f, ", \"title\": ");
+    json_string(f, M->name);  /* the file's name; the section says what it is */
+    fprintf(f, ", \"seed\": ");
+    json_string(f, s >= 0 ? seed_of(sec[s].header) : "000");
+    fprintf(f, ", \"section\": ");
+    json_string(f, s >= 0 ? sec[s].header : "");
+    fprintf(f, ", \"glb\": \"models/%s.glb\", \"residuals\": [", M->name);
+    json_string(f, stats);
+    if (s >= 0) {
+      fputc(',', f);
+      json_lines_inner(f, sec[s].body);
+    }
+    fprintf(f, "]}");
+  }
+  fprintf(f, "\n]}\n");
+  fclose(f);
+  for (k = 0; k < nsec; ++k) {
+    free(sec[k].header);
+    free(sec[k].body);
+  }
+}
+
 int main(int argc, char** argv) {
   const char* dir = argc > 1 ? argv[1] : "out";
   const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, Z1[3] = {0, 0, 1};
@@ -1541,6 +1893,7 @@ int main(int argc, char** argv) {
   dupin_demos(ctx, dir, report);
   laguerre_demos(ctx, dir, report);
   fclose(report);
+  write_gallery(ctx, dir, path);
   cyc_context_destroy(ctx);
   {
     FILE* f = fopen(path, "r");

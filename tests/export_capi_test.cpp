@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <cstdio>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "cyclide/cyclide.h"
@@ -256,6 +258,101 @@ TEST_F(ExportCapi, BezierExportStatuses) {
   EXPECT_EQ(cyc_bezier_export_create(ctx, s, &D, &out), CYC_E_OUT_OF_MEMORY);
   EXPECT_EQ(out, reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed)));
   counting.fail = false;
+}
+
+// A ring of n points of radius r at height z (closed rows of a grid).
+void ring(std::vector<double>& pts, int n, double r, double z, bool reversed) {
+  for (int j = 0; j < n; ++j) {
+    const double t = 2 * kPi * (reversed ? -j : j) / n;
+    pts.push_back(r * std::cos(t));
+    pts.push_back(r * std::sin(t));
+    pts.push_back(z);
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return "";
+  std::string s;
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
+  std::fclose(f);
+  return s;
+}
+
+bool exists(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f) std::fclose(f);
+  return f != nullptr;
+}
+
+// Two cylinders sharing the circle z = 1 (the second runs it the other
+// way): one welded glb; bad input leaves the file untouched and no .part.
+TEST_F(ExportCapi, MeshWriterWeldsSharedCirclesAndWritesAtomically) {
+  std::vector<double> a, b;
+  for (int i = 0; i < 3; ++i) ring(a, 24, 1, 0.5 * i, false);        // z = 0, 0.5, 1
+  for (int i = 0; i < 3; ++i) ring(b, 24, 1, 1 + 0.5 * i, i == 0);  // z = 1 (reversed), ...
+  const cyc_grid_mesh g[2] = {{a.data(), nullptr, 3, 3, 24, 1}, {b.data(), nullptr, 3, 3, 24, 1}};
+  const std::string path = ::testing::TempDir() + "cyclide_two_cylinders.glb";
+  std::remove(path.c_str());
+  cyc_mesh_stats st;
+  ASSERT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_GLB, g, 2, nullptr, &st), CYC_OK);
+  EXPECT_EQ(st.welded_rows, 1);
+  EXPECT_EQ(st.vertices, 5u * 24u);  // 6 rows, one shared
+  EXPECT_EQ(st.triangles, 2u * 2u * 2u * 24u);
+  const std::string glb = read_file(path);
+  ASSERT_GE(glb.size(), 12u);
+  EXPECT_EQ(glb.substr(0, 4), "glTF");
+  EXPECT_FALSE(exists(path + ".part"));
+  // Invalid input: the existing file stays as it was, no .part is left.
+  cyc_grid_mesh bad = g[0];
+  bad.rows = 1;
+  EXPECT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_GLB, &bad, 1, nullptr, nullptr),
+            CYC_E_INVALID_ARGUMENT);
+  expect_message("cyc_mesh_write");
+  EXPECT_EQ(cyc_mesh_write(ctx, path.c_str(), 9, g, 2, nullptr, nullptr), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_GLB, g, 0, nullptr, nullptr),
+            CYC_E_INVALID_ARGUMENT);
+  std::vector<double> nan_pts = a;
+  nan_pts[7] = kNaN;
+  const cyc_grid_mesh gn{nan_pts.data(), nullptr, 3, 3, 24, 1};
+  EXPECT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_OBJ, &gn, 1, nullptr, nullptr),
+            CYC_E_NOT_FINITE);
+  EXPECT_EQ(read_file(path), glb);
+  EXPECT_FALSE(exists(path + ".part"));
+  // A directory that does not exist: CYC_E_IO.
+  EXPECT_EQ(cyc_mesh_write(ctx, "/nonexistent-cyclide-dir/x.obj", CYC_MESH_OBJ, g, 2, nullptr,
+                           nullptr),
+            CYC_E_IO);
+  expect_message("nonexistent-cyclide-dir");
+  // Every format writes; OBJ lists the welded vertex count.
+  for (int fmt : {CYC_MESH_OBJ, CYC_MESH_PLY, CYC_MESH_STL}) {
+    const std::string p = ::testing::TempDir() + "cyclide_two_cylinders." + std::to_string(fmt);
+    ASSERT_EQ(cyc_mesh_write(ctx, p.c_str(), fmt, g, 2, nullptr, &st), CYC_OK) << fmt;
+    EXPECT_GT(read_file(p).size(), 100u);
+    std::remove(p.c_str());
+  }
+  std::remove(path.c_str());
+}
+
+// The export as JSON: the schema's header, one entry per patch.
+TEST_F(ExportCapi, BezierExportAsJson) {
+  const cyc_export_domain D{-0.5, 0.5, 0, 0, 1};
+  cyc_bezier_export* e = nullptr;
+  ASSERT_EQ(cyc_bezier_export_create(ctx, s, &D, &e), CYC_OK);
+  const std::string path = ::testing::TempDir() + "cyclide_example2.json";
+  ASSERT_EQ(cyc_bezier_export_write_json(ctx, e, path.c_str()), CYC_OK);
+  const std::string j = read_file(path);
+  EXPECT_NE(j.find("\"cyclide-rational-bezier\""), std::string::npos);
+  size_t count = 0;
+  for (size_t at = j.find("\"deg_u\""); at != std::string::npos; at = j.find("\"deg_u\"", at + 1))
+    ++count;
+  EXPECT_EQ(int(count), cyc_bezier_export_count(e));
+  EXPECT_EQ(cyc_bezier_export_write_json(ctx, e, nullptr), CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_bezier_export_write_json(ctx, e, "/nonexistent-cyclide-dir/x.json"), CYC_E_IO);
+  std::remove(path.c_str());
+  cyc_bezier_export_destroy(e);
 }
 
 }  // namespace

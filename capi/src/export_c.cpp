@@ -1,11 +1,15 @@
-// C ABI of issue 9 (SPEC.md §8j): adaptive tessellation and the exact
-// rational Bezier export of circle-family surfaces.
+// C ABI of issue 9 (SPEC.md §8j): adaptive tessellation, the exact rational
+// Bezier export of circle-family surfaces, and the mesh / JSON writers.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "capi_internal.hpp"
+#include "cyclide/mesh_io.hpp"
 #include "cyclide/rational_export.hpp"
 #include "cyclide/tessellate.hpp"
 
@@ -273,5 +277,106 @@ int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int ind
       uv[0] = std::min(std::max(uv[0], P.u0), P.u1);  // u0 + s (u1 - u0) may round past u1
     }
     return ok();
+  });
+}
+
+// ------------------------------------------------------------ writers
+
+namespace {
+
+// Writes through write(FILE*) into path + ".part", renamed to path on
+// success; on any failure the part file is removed and path is untouched.
+template <class Write>
+Outcome write_file(const char* fn, const char* path, bool binary, Write&& write) {
+  char part[4096];
+  if (std::snprintf(part, sizeof part, "%s.part", path) >= int(sizeof part))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: path is longer than %zu bytes", fn,
+                sizeof part - 6);
+  std::FILE* f = std::fopen(part, binary ? "wb" : "w");
+  if (!f) return fail(CYC_E_IO, "%s: cannot open %s: %s", fn, part, std::strerror(errno));
+  const Status s = write(f);
+  const bool closed = std::fclose(f) == 0;
+  if (s != Status::ok || !closed) {
+    const int err = errno;
+    std::remove(part);
+    if (s != Status::ok && s != Status::io_error) return from_core(fn, s);
+    return fail(CYC_E_IO, "%s: writing %s failed: %s", fn, part, std::strerror(err));
+  }
+  if (std::rename(part, path) != 0) {
+    const int err = errno;
+    std::remove(part);
+    return fail(CYC_E_IO, "%s: cannot rename %s to %s: %s", fn, part, path, std::strerror(err));
+  }
+  return ok();
+}
+
+}  // namespace
+
+int cyc_mesh_write(cyc_context* ctx, const char* path, int format, const cyc_grid_mesh* grids,
+                   int count, const cyc_mesh_write_options* options, cyc_mesh_stats* stats) {
+  const char* fn = "cyc_mesh_write";
+  return run(ctx, fn, [&] {
+    REQUIRE(path);
+    REQUIRE(grids);
+    if (format < CYC_MESH_OBJ || format > CYC_MESH_GLB)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown format %d", fn, format);
+    if (count < 1 || count > kMaxMeshGrids)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: count = %d is outside 1..%d", fn, count,
+                  kMaxMeshGrids);
+    GridMesh G[kMaxMeshGrids];
+    for (int k = 0; k < count; ++k) {
+      const cyc_grid_mesh& g = grids[k];
+      if (!g.points) return fail(CYC_E_NULL_ARGUMENT, "%s: grids[%d].points is NULL", fn, k);
+      G[k].points = g.points;
+      G[k].normals = g.normals;
+      G[k].stride = g.stride;
+      G[k].rows = g.rows;
+      G[k].cols = g.cols;
+      G[k].closed = g.closed != 0;
+    }
+    MeshWriteOptions o;
+    if (options) {
+      if (std::isnan(options->weld_tolerance))
+        return fail(CYC_E_INVALID_ARGUMENT, "%s: weld_tolerance is NaN", fn);
+      o.weld_tolerance = options->weld_tolerance;
+      o.name = options->name;
+    }
+    // Everything is validated before the file is created.
+    MeshStats st;
+    if (Status s = mesh_stats(G, count, o, st); s != Status::ok) {
+      if (s == Status::invalid_argument)
+        return fail(CYC_E_INVALID_ARGUMENT,
+                    "%s: a grid is invalid (rows >= 2, cols >= 2 or >= 3 when closed, stride >= "
+                    "3, a cell of nonzero area) or the name is too long",
+                    fn);
+      return from_core(fn, s);
+    }
+    const bool binary = format != CYC_MESH_OBJ;
+    if (Outcome w = write_file(fn, path, binary,
+                               [&](std::FILE* f) {
+                                 return write_mesh(f, MeshFormat(format), G, count, o, &st);
+                               });
+        w.status)
+      return w;
+    if (stats) {
+      stats->vertices = st.vertices;
+      stats->triangles = st.triangles;
+      stats->welded_rows = st.welded_rows;
+      stats->collapsed_rows = st.collapsed_rows;
+      stats->coordinate_sum = st.coordinate_sum;
+      stats->tolerance = st.tolerance;
+    }
+    return ok();
+  });
+}
+
+int cyc_bezier_export_write_json(cyc_context* ctx, const cyc_bezier_export* e, const char* path) {
+  const char* fn = "cyc_bezier_export_write_json";
+  return run(ctx, fn, [&] {
+    REQUIRE(e);
+    REQUIRE(path);
+    return write_file(fn, path, false, [&](std::FILE* f) {
+      return write_rational_bezier_json(f, e->patches, e->count);
+    });
   });
 }

@@ -2016,6 +2016,63 @@ CYC_API int cyc_bezier_export_patch(cyc_context* ctx, const cyc_bezier_export* e
 CYC_API int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int index,
                                    double s, double t, double x[3], double uv[2]);
 
+/* ---- writers (issue 9 item 2) */
+
+/** A grid of rows x cols points (point (i, j) at points + (i cols + j)
+ *  stride), normals optional (same indexing; may be NULL), closed: the cols
+ *  direction wraps (as cyc_tessellate_eval writes it). */
+typedef struct cyc_grid_mesh {
+  const double* points;
+  const double* normals;
+  size_t stride; /* doubles, >= 3, for both arrays */
+  int rows, cols;
+  int closed;
+} cyc_grid_mesh;
+
+/** File formats of cyc_mesh_write. */
+enum cyc_mesh_format {
+  CYC_MESH_OBJ = 0, /* ASCII, v / vn / f, %.17g */
+  CYC_MESH_PLY = 1, /* binary little-endian, float32 positions and normals */
+  CYC_MESH_STL = 2, /* binary, float32 */
+  CYC_MESH_GLB = 3  /* glTF 2.0 binary: POSITION, NORMAL, uint32 indices */
+};
+
+/** Options of cyc_mesh_write (NULL: the defaults). */
+typedef struct cyc_mesh_write_options {
+  double weld_tolerance; /* < 0: 1e-9 x the model size; 0: exact matches only */
+  const char* name;      /* glb node/mesh name, OBJ "o" line (NULL: none) */
+} cyc_mesh_write_options;
+
+/** What a write produced. */
+typedef struct cyc_mesh_stats {
+  size_t vertices;  /* distinct vertices after welding */
+  size_t triangles;
+  int welded_rows;    /* end rows that reuse an earlier grid's vertices */
+  int collapsed_rows; /* end rows that became one vertex (poles) */
+  double coordinate_sum; /* sum of x + y + z over the vertices (a checksum) */
+  double tolerance;      /* the welding tolerance used */
+} cyc_mesh_stats;
+
+/** Writes grids[0..count) as one welded, indexed triangle mesh to the file
+ *  path (SPEC.md §8j.3): the end rows of a grid that coincide with end
+ *  rows of an earlier grid (a shared circle, either direction, any cyclic
+ *  offset) share its vertices, so blends written with the shapes they join
+ *  are watertight. The file is written to path + ".part" and renamed on
+ *  success: on any error path is untouched (and no .part file remains).
+ *  CYC_E_NULL_ARGUMENT, CYC_E_INVALID_ARGUMENT (count outside 1..1024, bad
+ *  grid sizes or stride, unknown format, a name longer than 256 bytes, a
+ *  degenerate grid), CYC_E_NOT_FINITE (a point), CYC_E_IO (the file could
+ *  not be written). stats may be NULL. Allocates nothing but the C
+ *  library's FILE. */
+CYC_API int cyc_mesh_write(cyc_context* ctx, const char* path, int format,
+                           const cyc_grid_mesh* grids, int count,
+                           const cyc_mesh_write_options* options, cyc_mesh_stats* stats);
+/** The export's patches as JSON (schema "cyclide-rational-bezier", version
+ *  1, SPEC.md §8j.3), written like cyc_mesh_write (path + ".part", renamed
+ *  on success). CYC_E_NULL_ARGUMENT, CYC_E_IO. */
+CYC_API int cyc_bezier_export_write_json(cyc_context* ctx, const cyc_bezier_export* e,
+                                         const char* path);
+
 /* ======================================================================
  * Seed 004: Laguerre geometry, PN surfaces, parabolic Dupin cyclides, design
  * (Peternell-Pottmann, SPEC.md §8i). Plain values, allocation-free unless
