@@ -285,6 +285,17 @@ TEST(MeshIo, WeldedJoinIsWatertight) {
     EXPECT_EQ(num(r, "boundary_edges"), 2 * N) << format_name(fmt);
     EXPECT_NEAR(num(r, "volume"), volume, 1e-5 * volume) << format_name(fmt);
   }
+  // B's normals inward (a surface parameterized the other way): the join
+  // still orients B like A (round_trip checks no edge is misoriented), B's
+  // normals are written negated, and the volume is the same.
+  Grid Bin = B;
+  for (double& c : Bin.normals) c = -c;
+  for (const MeshFormat fmt : {MeshFormat::obj, MeshFormat::glb}) {
+    MeshStats s;
+    const auto r = round_trip(fmt, {A.view(), Bin.view()}, MeshWriteOptions(), s, "join_flip");
+    EXPECT_EQ(s.welded_rows, 1);
+    EXPECT_NEAR(num(r, "volume"), volume, 1e-5 * volume) << format_name(fmt);
+  }
   // Welding off (exact matches only): the perturbed circle stays double.
   MeshWriteOptions exact;
   exact.weld_tolerance = 0;

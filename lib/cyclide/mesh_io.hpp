@@ -21,7 +21,10 @@
 // (a pole, a pinch) becomes one vertex. Triangles with two equal vertex
 // indices are skipped. Interior rows are never welded.
 //
-// Winding. Per grid: the sign of sum over cells of <quad normal, sum of the
+// Winding. A grid welded to an earlier grid takes the winding that runs
+// the shared row the other way (one consistently oriented mesh; its given
+// normals are then negated where they disagreed). Otherwise, per grid: the
+// sign of sum over cells of <quad normal, sum of the
 // given corner normals>, the quad normal (p11 - p00) x (p01 - p10) ~ 2 x_u x x_v
 // (positive or no normals: triangles (i,j),(i+1,j),(i+1,j+1) and
 // (i,j),(i+1,j+1),(i,j+1), whose normal is x_u x x_v). Written vertex

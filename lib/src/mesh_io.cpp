@@ -166,6 +166,7 @@ struct GridInfo {
   bool collapsed[2] = {false, false};  // first, last row is one vertex
   std::size_t base = 0;               // index of the grid's first own vertex
   double sign = 1;                    // winding
+  bool flip = false;                  // the given normals are written negated
   double fallback[3] = {0, 0, 1};     // unit normal of the largest cell, times sign
 };
 
@@ -236,6 +237,24 @@ class Mesh {
       base += own(k, 0) + std::size_t(G.rows - 2) * std::size_t(G.cols) + own(k, 1);
     }
     vertices = base;
+    // Consistent orientation across joins: a grid welded to an earlier one
+    // takes the winding that runs their shared row in opposite directions
+    // (its given normals are then negated if they disagreed).
+    for (int k = 0; k < n; ++k)
+      for (int end = 0; end < 2; ++end) {
+        const RowWeld& w = info[k].weld[end];
+        if (w.grid < 0 || w.grid == k) continue;
+        // Sign +1 runs the first row towards decreasing j, the last row
+        // towards increasing j (see for_each_triangle).
+        const double d_h = (w.row == g[w.grid].rows - 1 ? 1 : -1) * info[w.grid].sign;
+        const double want = -d_h * w.dir * (end == 1 ? 1 : -1);
+        if (want != info[k].sign) {
+          info[k].sign = want;
+          info[k].flip = !info[k].flip;
+          for (double& c : info[k].fallback) c = -c;
+        }
+        break;
+      }
     // Triangles, bounds and the checksum.
     triangles = 0;
     for_each_triangle([this](std::size_t, std::size_t, std::size_t) { ++triangles; });
@@ -323,7 +342,11 @@ class Mesh {
     if (G.normals) {
       const double* n =
           G.normals + (std::size_t(i) * std::size_t(G.cols) + std::size_t(j)) * G.stride;
-      if (finite3(n) && normalize(n, r)) return;
+      if (finite3(n) && normalize(n, r)) {
+        if (info[k].flip)
+          for (int c = 0; c < 3; ++c) r[c] = -r[c];
+        return;
+      }
     }
     V3 s = {0, 0, 0};
     const int j0 = whole_row ? 0 : j - 1, j1 = whole_row ? G.cols - 1 : j;
