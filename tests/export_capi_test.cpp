@@ -355,4 +355,91 @@ TEST_F(ExportCapi, BezierExportAsJson) {
   cyc_bezier_export_destroy(e);
 }
 
+// de Boor: the homogeneous point of a clamped NURBS curve of degree p with
+// knots U at t (the control rows of 4 doubles, stride in doubles).
+void de_boor(int p, const std::vector<double>& U, const double* cp, size_t stride, int n, double t,
+             double out[4]) {
+  int k = p;  // the span: U[k] <= t < U[k + 1], the last one closed
+  while (k + 1 < n && U[k + 1] <= t) ++k;
+  std::vector<double> d(4 * (p + 1));
+  for (int j = 0; j <= p; ++j)
+    for (int c = 0; c < 4; ++c) d[4 * j + c] = cp[(k - p + j) * stride + c];
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      const int i = k - p + j;
+      const double den = U[i + p + 1 - r] - U[i];
+      const double a = den > 0 ? (t - U[i]) / den : 0;
+      for (int c = 0; c < 4; ++c) d[4 * j + c] = (1 - a) * d[4 * (j - 1) + c] + a * d[4 * j + c];
+    }
+  for (int c = 0; c < 4; ++c) out[c] = d[4 * p + c];
+}
+
+// The whole circles of Example 2 as one NURBS: evaluated here by de Boor
+// (in tau, then in u), it is the surface at (u, v(tau)).
+TEST_F(ExportCapi, NurbsOfTheExportIsTheSurface) {
+  const cyc_export_domain D{-0.5, 0.5, 0, 0, 1};
+  cyc_bezier_export* e = nullptr;
+  ASSERT_EQ(cyc_bezier_export_create(ctx, s, &D, &e), CYC_OK);
+  cyc_nurbs_size N;
+  ASSERT_EQ(cyc_bezier_export_nurbs(ctx, e, &N, nullptr, 0, nullptr, 0, nullptr, 0), CYC_OK);
+  EXPECT_EQ(N.deg_v, 2);
+  EXPECT_EQ(N.knots_u, N.cp_u + N.deg_u + 1);
+  EXPECT_EQ(N.knots_v, N.cp_v + N.deg_v + 1);
+  std::vector<double> U(N.knots_u), V(N.knots_v), cp(4 * size_t(N.cp_u) * N.cp_v);
+  std::vector<double> small(cp.size() - 1, 7.0);
+  EXPECT_EQ(cyc_bezier_export_nurbs(ctx, e, &N, U.data(), U.size(), V.data(), V.size(),
+                                    small.data(), small.size()),
+            CYC_E_BUFFER_TOO_SMALL);
+  EXPECT_EQ(small[0], 7.0);
+  ASSERT_EQ(cyc_bezier_export_nurbs(ctx, e, &N, U.data(), U.size(), V.data(), V.size(), cp.data(),
+                                    cp.size()),
+            CYC_OK);
+  EXPECT_EQ(U.front(), -0.5);
+  EXPECT_EQ(U.back(), 0.5);
+  EXPECT_EQ(V.front(), -2);
+  EXPECT_EQ(V.back(), 2);
+  for (size_t i = 0; i + 1 < U.size(); ++i) EXPECT_LE(U[i], U[i + 1]);
+  for (size_t i = 0; i < cp.size(); i += 4) EXPECT_GT(cp[i], 0);
+  for (double u : {-0.5, -0.11, 0.2, 0.5})
+    for (double v : {-30.0, -1.0, -0.3, 0.0, 0.7, 1.0, 4.0}) {
+      const double tau = cyc_export_tau_of_v(v);
+      EXPECT_NEAR(cyc_export_v_of_tau(tau), v, 1e-12 * (1 + std::fabs(v)));
+      // In tau for every row of control points, then in u.
+      std::vector<double> col(4 * size_t(N.cp_u));
+      for (int i = 0; i < N.cp_u; ++i)
+        de_boor(N.deg_v, V, &cp[4 * size_t(i) * N.cp_v], 4, N.cp_v, tau, &col[4 * i]);
+      double h[4];
+      de_boor(N.deg_u, U, col.data(), 4, N.cp_u, u, h);
+      double y[3];
+      point(u, v, y);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(h[1 + c] / h[0], y[c], 1e-12 * (1 + std::fabs(y[c])));
+    }
+  cyc_bezier_export_destroy(e);
+}
+
+// A parabolic ring cyclide (4.1) exports exactly as (2, 2) patches.
+TEST_F(ExportCapi, ParabolicCyclideExport) {
+  cyc_parabolic_cyclide c;
+  std::memset(&c, 0, sizeof c);
+  c.a = 1, c.b = -0.5;
+  c.frame[0] = c.frame[4] = c.frame[8] = 1;
+  cyc_surface* p = nullptr;
+  ASSERT_EQ(cyc_parabolic_cyclide_surface_create(ctx, &c, -2, 2, &p), CYC_OK);
+  const cyc_export_domain D{-2, 2, 0, 0, 1};
+  cyc_bezier_export* e = nullptr;
+  ASSERT_EQ(cyc_bezier_export_create(ctx, p, &D, &e), CYC_OK);
+  for (int k = 0; k < cyc_bezier_export_count(e); ++k) {
+    cyc_bezier_patch_info info;
+    ASSERT_EQ(cyc_bezier_export_patch(ctx, e, k, &info, nullptr, 0), CYC_OK);
+    EXPECT_EQ(info.deg_u, 2);
+    EXPECT_EQ(info.deg_v, 2);
+    double x[3], uv[2], y[3];
+    ASSERT_EQ(cyc_bezier_export_eval(ctx, e, k, 0.3, 0.8, x, uv), CYC_OK);
+    ASSERT_EQ(cyc_parabolic_cyclide_eval(ctx, &c, uv[0], uv[1], y, nullptr), CYC_OK);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(x[i], y[i], 1e-12 * (1 + std::fabs(y[i])));
+  }
+  cyc_bezier_export_destroy(e);
+  cyc_surface_destroy(ctx, p);
+}
+
 }  // namespace

@@ -178,8 +178,6 @@ int cyc_bezier_export_create(cyc_context* ctx, const cyc_surface* surface,
     const Surface& S = surface->surface;
     int count = 0;
     if (Status s = rational_bezier_patch_count(S, D, count); s != Status::ok) {
-      if (s == Status::unsupported)
-        return fail(CYC_E_UNSUPPORTED, "%s: this surface kind has no exact export yet", fn);
       if (s == Status::bad_domain)
         return fail(CYC_E_BAD_DOMAIN,
                     "%s: the rectangle [%.17g, %.17g] x [%.17g, %.17g] is empty or leaves the "
@@ -378,5 +376,59 @@ int cyc_bezier_export_write_json(cyc_context* ctx, const cyc_bezier_export* e, c
     return write_file(fn, path, false, [&](std::FILE* f) {
       return write_rational_bezier_json(f, e->patches, e->count);
     });
+  });
+}
+
+// ------------------------------------------------------------ NURBS
+
+double cyc_export_tau_of_v(double v) { return export_tau_of_v(v); }
+double cyc_export_v_of_tau(double tau) { return export_v_of_tau(tau); }
+
+int cyc_bezier_export_nurbs(cyc_context* ctx, const cyc_bezier_export* e, cyc_nurbs_size* size,
+                            double* knots_u, size_t knots_u_cap, double* knots_v,
+                            size_t knots_v_cap, double* control, size_t control_cap) {
+  const char* fn = "cyc_bezier_export_nurbs";
+  return run(ctx, fn, [&] {
+    REQUIRE(e);
+    REQUIRE(size);
+    NurbsSize N;
+    if (Status s = nurbs_size(e->patches, e->count, N); s != Status::ok) return from_core(fn, s);
+    const auto put_size = [&] {
+      size->deg_u = N.deg_u;
+      size->deg_v = N.deg_v;
+      size->cp_u = N.cp_u;
+      size->cp_v = N.cp_v;
+      size->knots_u = N.knots_u();
+      size->knots_v = N.knots_v();
+    };
+    if (!knots_u && !knots_v && !control) {  // the size query
+      put_size();
+      return ok();
+    }
+    REQUIRE(knots_u);
+    REQUIRE(knots_v);
+    REQUIRE(control);
+    if (knots_u_cap < size_t(N.knots_u()) || knots_v_cap < size_t(N.knots_v()) ||
+        control_cap < 4 * size_t(N.cp_count())) {
+      put_size();
+      return fail(CYC_E_BUFFER_TOO_SMALL,
+                  "%s: %d + %d knots and %d control points (x 4 doubles) are needed", fn,
+                  N.knots_u(), N.knots_v(), N.cp_count());
+    }
+    NurbsBuffers B;
+    B.knots_u = knots_u;
+    B.cap_knots_u = N.knots_u();
+    B.knots_v = knots_v;
+    B.cap_knots_v = N.knots_v();
+    B.cp = reinterpret_cast<double(*)[4]>(control);
+    B.cap_cp = N.cp_count();
+    if (Status s = assemble_nurbs(e->patches, e->count, B, N); s != Status::ok) {
+      if (s == Status::numerical_overflow)
+        return fail(CYC_E_NUMERICAL_OVERFLOW,
+                    "%s: neighbouring patches disagree on a shared edge beyond 1e-12", fn);
+      return from_core(fn, s);
+    }
+    put_size();
+    return ok();
   });
 }

@@ -1,7 +1,8 @@
 // Exact rational tensor-product Bezier export of circle-family surfaces
-// (issue 9 item 1, first slice): kinds prcs, prrs and ringed
-// (SurfaceKind 1..3). Kinds dupin and parabolic return Status::unsupported
-// for now (a later slice adds them: their frames are not ExactFrames).
+// (issue 9 item 1): kinds prcs, prrs and ringed through their exact frames
+// (E1)-(E6), kinds dupin and parabolic through closed forms of bidegree
+// (2, 2) (E7)-(E9); and the assembly of one export's patches into a
+// tensor-product NURBS (N1)-(N4) below.
 //
 // Math (the equation numbers (E1)..(E6) are referred to in
 // lib/src/rational_export.cpp). With the exact frame of exact.hpp
@@ -44,8 +45,42 @@
 //        the frame's size |o| + |p - o|, which can exceed |x| many times);
 //        a u-interval is bisected (de Casteljau) until every weight of
 //        every v-piece is positive.
+//   (E7) parabolic (seed 004 (4.1)): Surface::eval reproduces (4.1)
+//        (parabolic_frame, f = v), so the homogeneous point is
+//          X_h(u, v) = (phi0, origin phi0 + frame (phi1, phi2, phi3)),
+//          phi = (1 + u^2 + v^2, a u + (a - b) u v^2, b v + (b - a) u^2 v,
+//                 a u^2 + b v^2),
+//        of degree (2, 2), with weight phi0 = 1 + u^2 + v^2 > 0 (the frame
+//        route (E4) would give m = 6 = n_o 3 + n_p 1 + 2 n_a 1, with the
+//        common factor wo = 2 (1 + u^2)).
+//   (E8) dupin (seed 003 (25)-(30), ERRATA.md's signs; dupin.hpp): with
+//        xi = x0 : x1, x0 = xm0 u + xm1, x1 = xm2 u + xm3 and zeta = z0 : z1,
+//        z0 = zm0 v + zm1, z1 = zm2 v + zm3 (DupinView's maps),
+//          a(u) = theta(2 x0 x1 e1 + (x1^2 - x0^2) e2 + (x1^2 + x0^2) e-)  (29)
+//          b(v) = theta(2 z0 z1 e3 + (z1^2 - z0^2) e+ + (z1^2 + z0^2) er)  (30)
+//        are quadratic in u and in v, and (25) c^ = (er.a) b - (er.b) a
+//        (er.x = -x_r) is bilinear in them: degree (2, 2). (26)-(27): x =
+//        c^_123 / w + origin with w = -c^.n_inf = c^_- - c^_+, so
+//          X_h(u, v) = (w, c^_123 + origin w).
+//        Surface::eval(u, v) = c(xi(u), zeta(v)) (DupinView), so X_h is the
+//        surface exactly; no frame (circumcentre, axis) enters, which is
+//        why it is often better conditioned than the evaluator (a random
+//        cyclide whose zeta map squeezed most of a circle into a short
+//        v-interval: patches within 2e-10 of dupin_eval_homogeneous,
+//        Surface::eval off by 1e-9; worse ones fail the check below).
+//        u is taken as mid + half t (t in [-1, 1]), the coefficients formed
+//        in long double.
+//   (E9) In (E7)/(E8), v -> X_h(u, v) is a quadratic parameterization of
+//        the same circle as (E3), so X_h = lambda(u) (Q, Q o + N) (the
+//        circle's rational quadratic form is unique up to a factor); thus
+//        the piece weights (E5) are lambda(u) times <q(v0), q(v1)> etc.,
+//        and (E5)/(E6) apply unchanged: the arc test uses Surface::frame at
+//        the 65 samples (a frame failing there, e.g. point_at_infinity or
+//        singular_point, is returned), the pole test the sign of X_h's
+//        weight at v = 1 (lambda(u) Q(u, 1), Q > 0).
 //
-// Degrees: deg_u = m <= kMaxExportDegree (else degree_too_high), deg_v = 2.
+// Degrees: deg_u = m <= kMaxExportDegree (else degree_too_high), deg_v = 2;
+// dupin and parabolic: deg_u = 2 (E7)/(E8).
 // Patches: the v-pieces (at least one per part of [v0, v1] split at v = -1
 // and 1; a whole circle has at least 4) times the u-intervals (at least 1),
 // in u-major order (all v-pieces of the first u-interval, then the next);
@@ -57,6 +92,9 @@
 // The tests find ~5e-16 relative to |x| for polynomial cubic inputs
 // (<= 1e-12 over 120000 random well-conditioned cases), ~6e-14 for the
 // degree-63 pieces of a rational quartic PRCS.
+// Dupin and parabolic: ~3e-15 (dupin) and ~4e-16 (parabolic) relative in
+// the tests, 20000 random cases each within 1e-12 (test property, which
+// draws cyclides of bounded frames and a uniform enough circle parameter).
 // Allocation: none (evaluation tier); the caller owns the patch array.
 // Stack: about 320 KB at the deepest (GCC -O2: export 81 KB, the products
 // 151 KB in long double, exact_prrs_frame 76 KB).
@@ -110,7 +148,7 @@ struct ExportDomain {
 };
 
 // The patches of S over D into out[0..cap). Statuses: ok (count written);
-// unsupported (dupin, parabolic); not_finite (a NaN or infinite bound);
+// invalid_argument (an unknown kind); not_finite (a NaN or infinite bound);
 // bad_domain (not u0 < u1 inside the surface's domain, not v0 < v1);
 // degree_too_high (m >
 // kMaxExportDegree, or the exact frame's own bound); point_at_infinity (the
@@ -120,7 +158,8 @@ struct ExportDomain {
 // changes sign); numerical_overflow (weights not positive after
 // kMaxExportDepth bisections otherwise, piece limits exceeded, or the check
 // against Surface::eval failed); Surface::eval's status where it fails at a
-// check point; buffer_too_small (count = the number needed, nothing
+// check point; dupin and parabolic: Surface::frame's status where it fails
+// at one of the 65 samples (E9: point_at_infinity, singular_point, ...); buffer_too_small (count = the number needed, nothing
 // written; out may be null with cap = 0); null_argument (out null, cap >=
 // count). On every other status count is 0. out is written only after
 // every patch was built and checked (two passes): never half-written.
@@ -139,6 +178,88 @@ void patch_eval_homogeneous(const RationalBezierPatch& P, double s, double t, do
 Vec3d patch_point(const RationalBezierPatch& P, double s, double t);
 // The surface parameters (u, v) of local (s, t); v is +-HUGE_VAL at w = 0.
 void patch_parameters(const RationalBezierPatch& P, double s, double t, double& u, double& v);
+
+// ------------------------------------------------ NURBS assembly (N1)-(N4)
+//
+// (N1) v-parameter. The NURBS runs in tau, a monotone reparameterization of
+//      the surface's v on R and infinity in which every v-piece (E5) is
+//      linear:  tau = v for |v| <= 1,  tau = 2 sign(v) - 1/v for |v| >= 1
+//      (tau in [-2, 2]; tau = -2 and 2 are both v = infinity, the generator
+//      p(u)). A piece in v (|v| <= 1) has local t linear in v = tau, a
+//      reciprocal piece t linear in 1/v = 2 sign(v) - tau: the Bezier
+//      pieces are the NURBS' knot spans without reparameterization.
+// (N2) Knots. u: the surface's u (patches are linear in u);
+//      U = (u_0 x (p + 1), u_1 x p, ..., u_{nu-1} x p, u_nu x (p + 1)),
+//      u_i the boundaries of the nu u-intervals, p = deg_u; v likewise in
+//      tau with q = deg_v = 2 at the nv v-pieces' boundaries. Clamped, C0 at
+//      every interior knot (multiplicity = degree); (nu p + 1) x (nv q + 1)
+//      control points, nu p + p + 2 and nv q + q + 2 knots.
+// (N3) Control net: patch (iu, iv)'s point (i, j) is net point
+//      (iu p + i, iv q + j), at cp[(iu p + i) * cp_v + iv q + j], homogeneous
+//      (w, wx, wy, wz). Each patch is homogeneous up to its own positive
+//      factor (build_patch scales each by a power of two), so patch (iu, iv)
+//      is first scaled by the ratio of the weight sums over its edge shared
+//      with the left (iv > 0) or lower (iv = 0, iu > 0) neighbour; every
+//      shared edge then must agree to kNurbsJoinTol relative to the largest
+//      |component| on it (numerical_overflow otherwise) and keeps the
+//      earlier patch's values. Finally the net is scaled by a power of two,
+//      largest weight in [0.5, 1). For a whole circle the ends tau = -2 and
+//      2 are the same curve p(u) (not merged: the net is clamped, not
+//      periodic).
+// (N4) nurbs_eval_homogeneous: de Boor in u on the q + 1 rows of the v-span,
+//      then in v (the homogeneous point; the spans are half-open, the last
+//      one closed).
+constexpr double kNurbsJoinTol = 1e-12;
+
+// tau(v) of (N1) (v = +-inf gives +-2) and its inverse (tau = +-2 gives
+// +-HUGE_VAL); tau outside [-2, 2] is clamped.
+double export_tau_of_v(double v);
+double export_v_of_tau(double tau);
+
+struct NurbsSize {
+  int deg_u = 0, deg_v = 0;
+  int nu = 0, nv = 0;    // Bezier patches in u and v
+  int cp_u = 0, cp_v = 0;  // control points in u and v (cp_u * cp_v in all)
+  int knots_u() const { return cp_u + deg_u + 1; }
+  int knots_v() const { return cp_v + deg_v + 1; }
+  int cp_count() const { return cp_u * cp_v; }
+};
+
+// Caller-owned output of assemble_nurbs (a pointer may be null with its
+// capacity 0 for a size query).
+struct NurbsBuffers {
+  double* knots_u = nullptr;
+  int cap_knots_u = 0;
+  double* knots_v = nullptr;
+  int cap_knots_v = 0;
+  double (*cp)[4] = nullptr;
+  int cap_cp = 0;
+};
+
+// The shape of the patch grid (u-major, rows of equal v-pieces, equal
+// degrees, contiguous u-intervals): invalid_argument otherwise, or for
+// count <= 0 or patches null (null_argument).
+Status nurbs_size(const RationalBezierPatch* patches, int count, NurbsSize& size);
+
+// The NURBS (N1)-(N3) of the patches of one export into B. Statuses of
+// nurbs_size; buffer_too_small (size filled, nothing written) when a
+// capacity is too small; null_argument for a null array with enough
+// capacity; numerical_overflow when shared control points do not agree
+// (N3) or a weight is not positive. B is written only on ok.
+Status assemble_nurbs(const RationalBezierPatch* patches, int count, const NurbsBuffers& B,
+                      NurbsSize& size);
+
+// A read-only view of an assembled NURBS (arrays as assemble_nurbs wrote).
+struct NurbsView {
+  NurbsSize size;
+  const double* knots_u = nullptr;
+  const double* knots_v = nullptr;
+  const double (*cp)[4] = nullptr;
+};
+
+// (N4): the homogeneous point at (u, tau), both clamped to the knot range.
+void nurbs_eval_homogeneous(const NurbsView& N, double u, double tau, double (&h)[4]);
+Vec3d nurbs_point(const NurbsView& N, double u, double tau);
 
 // Bernstein coefficients b[0..n] on [t0, t1] of sum_k c[k] t^k: Horner in
 // the Bernstein basis (each step a convex combination times t0 or t1, so the

@@ -11,8 +11,8 @@ namespace cyclide {
 inline namespace v0 {
 
 namespace {
-template <class R>
-void bernstein_from_power_t(const double* c, int n, R t0, R t1, R* b) {
+template <class R, class C>
+void bernstein_from_power_t(const C* c, int n, R t0, R t1, R* b) {
   // Horner p = c0 + t (c1 + t (c2 + ...)) with every partial result kept in
   // the Bernstein basis of its degree d on [t0, t1]: t has the coefficients
   // (t0, t1), so (t B)_k = (1 - k/(d+1)) t0 B_k + (k/(d+1)) t1 B_{k-1} (degree
@@ -181,7 +181,122 @@ struct Data {
 
 double sample_s(int k) { return double(k) / double(kSamples - 1); }
 
+// A quadratic in u as a quadratic in t, u = mid + half t (E7).
+void quadratic_in_t(Real c0, Real c1, Real c2, Real mid, Real half, Real (&t)[3]) {
+  t[0] = c0 + (c1 + c2 * mid) * mid;
+  t[1] = (c1 + 2 * c2 * mid) * half;
+  t[2] = c2 * half * half;
+}
+
+// (E7)/(E8): the closed forms of bidegree (2, 2) of kinds dupin and
+// parabolic. H[k][c][i]: component c (0 the weight) of X_h, the coefficient
+// of v^k t^i, t in [-1, 1] over [ua, ub].
+void closed_form(const Surface& S, double ua, double ub, Real (&H)[3][4][3]) {
+  const Real mid = 0.5L * (Real(ua) + Real(ub)), half = 0.5L * (Real(ub) - Real(ua));
+  for (auto& k : H)
+    for (auto& c : k)
+      for (Real& x : c) x = 0;
+  if (S.kind == SurfaceKind::parabolic) {
+    // (E7): (4.1) phi = (1 + u^2 + v^2, a u + (a - b) u v^2, b v + (b - a) u^2 v,
+    // a u^2 + b v^2) as sum_k phi_k(u) v^k, placed: x = origin + frame phi/phi0.
+    const ParabolicCyclide& C = S.parabolic;
+    const Real a = C.a, b = C.b;
+    Real phi[3][4][3] = {};  // [v^k][component][u^i]
+    phi[0][0][0] = 1;
+    phi[0][0][2] = 1;
+    phi[0][1][1] = a;
+    phi[0][3][2] = a;
+    phi[1][2][0] = b;
+    phi[1][2][2] = b - a;
+    phi[2][0][0] = 1;
+    phi[2][1][1] = a - b;
+    phi[2][3][0] = b;
+    for (int k = 0; k < 3; ++k) {
+      Real t[4][3];
+      for (int c = 0; c < 4; ++c)
+        quadratic_in_t(phi[k][c][0], phi[k][c][1], phi[k][c][2], mid, half, t[c]);
+      for (int i = 0; i < 3; ++i) {
+        H[k][0][i] = t[0][i];
+        for (int r = 0; r < 3; ++r) {
+          Real x = Real(C.origin[r]) * t[0][i];
+          for (int j = 0; j < 3; ++j) x += Real(C.frame(r, j)) * t[1 + j][i];
+          H[k][1 + r][i] = x;
+        }
+      }
+    }
+    return;
+  }
+  // (E8): Dupin. xi = x0 : x1 and zeta = z0 : z1 with x0 = xm0 u + xm1,
+  // x1 = xm2 u + xm3 (dupin_frame), z0 = zm0 v + zm1, z1 = zm2 v + zm3.
+  // (29), (30): a = theta(2 x0 x1 e1 + (x1^2 - x0^2) e2 + (x1^2 + x0^2) e-),
+  // b = theta(2 z0 z1 e3 + (z1^2 - z0^2) e+ + (z1^2 + z0^2) er), quadratics
+  // in t and in v; (25) c^ = (er . a) b - (er . b) a (er . x = -x_r), and
+  // (26)-(27) x = c^_123 / w + origin, w = -c^ . n_inf = c^_- - c^_+.
+  const DupinCyclide& D = S.dupin.cyclide;
+  const double* xm = S.dupin.xi_map;
+  const double* zm = S.dupin.zeta_map;
+  // family(t0, t1) with t0 = p + q s, t1 = r + w s: the coefficients of s^i
+  // of 2 t0 t1, t1^2 - t0^2, t1^2 + t0^2.
+  auto family = [&D](Real p, Real q, Real r, Real w, int ci, int cj, int ck, Real (&out)[6][3]) {
+    const Real cross[3] = {2 * p * r, 2 * (p * w + q * r), 2 * q * w};
+    const Real diff[3] = {r * r - p * p, 2 * (r * w - p * q), w * w - q * q};
+    const Real sum[3] = {r * r + p * p, 2 * (r * w + p * q), w * w + q * q};
+    for (int row = 0; row < 6; ++row)
+      for (int i = 0; i < 3; ++i)
+        out[row][i] = cross[i] * Real(D.theta(row, ci)) + diff[i] * Real(D.theta(row, cj)) +
+                      sum[i] * Real(D.theta(row, ck));
+  };
+  Real A[6][3], B[6][3];  // A[row][t^i], B[row][v^k]
+  family(Real(xm[0]) * mid + Real(xm[1]), Real(xm[0]) * half, Real(xm[2]) * mid + Real(xm[3]),
+         Real(xm[2]) * half, kE1, kE2, kEMinus, A);
+  family(zm[1], zm[0], zm[3], zm[2], kE3, kEPlus, kER, B);
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      Real c[6];
+      for (int row = 0; row < 6; ++row) c[row] = B[kER][k] * A[row][i] - A[kER][i] * B[row][k];
+      const Real w = c[kEMinus] - c[kEPlus];
+      H[k][0][i] = w;
+      for (int r = 0; r < 3; ++r) H[k][1 + r][i] = c[r] + Real(D.origin[r]) * w;
+    }
+}
+
+// Kinds dupin and parabolic: X from the closed form (m = 2), the arc data
+// from Surface::frame at the samples (its status where it fails: a pole
+// there is point_at_infinity), wowp = X_h's weight at v = 1, which has the
+// sign of lambda(u) in X_h = lambda(u) (Q, Q o + N) (E9).
+Status build_closed(const Surface& S, double ua, double ub, Data& X) {
+  Real H[3][4][3];
+  closed_form(S, ua, ub, H);
+  Arith A;
+  X.m = 2;
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 4; ++c) {
+      BPoly& b = X.X[k][c];
+      b.deg = 2;
+      bernstein_from_power_t<Real>(H[k][c], 2, -1.0, 1.0, b.c);
+    }
+  BPoly* xs[12];
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 4; ++c) xs[4 * k + c] = &X.X[k][c];
+  normalize(xs, 12);
+  X.wowp = A.add(A.add(X.X[0][0], X.X[1][0]), X.X[2][0]);
+  for (int i = 0; i < kSamples; ++i) {
+    const double u = i == kSamples - 1 ? ub : ua + sample_s(i) * (ub - ua);
+    CircleFrame<Taylor<double, 0>> F;
+    if (Status st = S.frame<0>(u, F); st != Status::ok) return st;
+    X.Wa0[i] = F.beta.c[0];
+    X.Wa1[i] = F.alpha.c[0];
+    X.g[i] = F.gamma.c[0];
+    X.d[i] = F.delta.c[0];
+    X.na[i] = std::sqrt(F.a[0].c[0] * F.a[0].c[0] + F.a[1].c[0] * F.a[1].c[0] +
+                        F.a[2].c[0] * F.a[2].c[0]);
+  }
+  return Status::ok;
+}
+
 Status build(const Surface& S, double ua, double ub, Data& X) {
+  if (S.kind == SurfaceKind::dupin || S.kind == SurfaceKind::parabolic)
+    return build_closed(S, ua, ub, X);
   const double mid = 0.5 * (ua + ub), half = 0.5 * (ub - ua);
   ExactFrame E;
   Status st = Status::internal_error;
@@ -194,7 +309,7 @@ Status build(const Surface& S, double ua, double ub, Data& X) {
       st = exact_ringed_frame(S.curve[0], S.curve[1], S.curve[2], E, mid, half);
       break;
     case SurfaceKind::dupin:
-    case SurfaceKind::parabolic: return Status::unsupported;
+    case SurfaceKind::parabolic: return Status::internal_error;  // build_closed
   }
   if (st != Status::ok) return st;
   Arith A;
@@ -376,10 +491,9 @@ struct Plan {
 };
 
 Status check_domain(const Surface& S, const ExportDomain& D) {
-  if (S.kind == SurfaceKind::dupin || S.kind == SurfaceKind::parabolic)
-    return Status::unsupported;
   if (S.kind != SurfaceKind::prcs && S.kind != SurfaceKind::prrs &&
-      S.kind != SurfaceKind::ringed)
+      S.kind != SurfaceKind::ringed && S.kind != SurfaceKind::dupin &&
+      S.kind != SurfaceKind::parabolic)
     return Status::invalid_argument;
   // NaN and infinities are not_finite, as everywhere (the whole circle's
   // v-range is implied, not given).
@@ -567,6 +681,198 @@ Status export_rational_bezier(const Surface& S, const ExportDomain& D, RationalB
   }
   count = need;
   return Status::ok;
+}
+
+// ------------------------------------------------ NURBS assembly (N1)-(N4)
+
+double export_tau_of_v(double v) {
+  if (std::abs(v) <= 1.0) return v;
+  return std::copysign(2.0, v) - 1.0 / v;  // (N1); 1/inf = 0
+}
+
+double export_v_of_tau(double tau) {
+  tau = std::min(2.0, std::max(-2.0, tau));
+  if (std::abs(tau) <= 1.0) return tau;
+  const double w = std::copysign(2.0, tau) - tau;  // 1/v
+  return w == 0.0 ? std::copysign(HUGE_VAL, tau) : 1.0 / w;
+}
+
+Status nurbs_size(const RationalBezierPatch* patches, int count, NurbsSize& size) {
+  size = NurbsSize{};
+  if (!patches) return Status::null_argument;
+  if (count <= 0) return Status::invalid_argument;
+  const RationalBezierPatch& P0 = patches[0];
+  int nv = 0;
+  while (nv < count && patches[nv].u0 == P0.u0 && patches[nv].u1 == P0.u1) ++nv;
+  if (nv > kMaxExportVPieces || count % nv != 0) return Status::invalid_argument;
+  const int nu = count / nv;
+  if (P0.deg_u < 1 || P0.deg_u > kMaxExportDegree || P0.deg_v < 1 || P0.deg_v > 2)
+    return Status::invalid_argument;
+  for (int iu = 0; iu < nu; ++iu)
+    for (int iv = 0; iv < nv; ++iv) {
+      const RationalBezierPatch& P = patches[iu * nv + iv];
+      const RationalBezierPatch& R = patches[iu * nv];  // the row's first
+      const RationalBezierPatch& C = patches[iv];       // the column's first
+      if (P.deg_u != P0.deg_u || P.deg_v != P0.deg_v) return Status::invalid_argument;
+      if (!(P.u0 < P.u1) || P.u0 != R.u0 || P.u1 != R.u1) return Status::invalid_argument;
+      if (iv == 0 && iu > 0 && P.u0 != patches[(iu - 1) * nv].u1) return Status::invalid_argument;
+      if (P.v0 != C.v0 || P.v1 != C.v1 || P.reciprocal_v != C.reciprocal_v)
+        return Status::invalid_argument;
+      // (N1): a reciprocal piece lies in |v| >= 1, a piece in v in |v| <= 1.
+      const bool in_v = std::abs(P.v0) <= 1.0 && std::abs(P.v1) <= 1.0;
+      const bool out_v = (P.v0 >= 1.0 && P.v1 >= 1.0) || (P.v0 <= -1.0 && P.v1 <= -1.0);
+      if (!(P.reciprocal_v ? out_v : in_v)) return Status::invalid_argument;
+      if (!(export_tau_of_v(P.v0) < export_tau_of_v(P.v1))) return Status::invalid_argument;
+      if (iu == 0 && iv > 0 && P.v0 != patches[iv - 1].v1) return Status::invalid_argument;
+    }
+  size.deg_u = P0.deg_u;
+  size.deg_v = P0.deg_v;
+  size.nu = nu;
+  size.nv = nv;
+  size.cp_u = nu * P0.deg_u + 1;
+  size.cp_v = nv * P0.deg_v + 1;
+  return Status::ok;
+}
+
+namespace {
+
+// Shared edge of two patches (N3): `a` scaled by sa against `b` scaled by
+// sb, n points at a[ia + k * da], b[ib + k * db]. The scale that makes b's
+// weights match a's (ratio of sums), and whether they agree after it.
+double edge_ratio(const RationalBezierPatch& A, int ia, int da, double sa,
+                  const RationalBezierPatch& Bp, int ib, int db, int n) {
+  double wa = 0.0, wb = 0.0;
+  for (int k = 0; k < n; ++k) {
+    wa += sa * A.cp[ia + k * da][0];
+    wb += Bp.cp[ib + k * db][0];
+  }
+  return wa / wb;
+}
+bool edge_agrees(const RationalBezierPatch& A, int ia, int da, double sa,
+                 const RationalBezierPatch& Bp, int ib, int db, double sb, int n) {
+  double err = 0.0, big = 0.0;
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 4; ++c) {
+      const double x = sa * A.cp[ia + k * da][c], y = sb * Bp.cp[ib + k * db][c];
+      err = std::max(err, std::abs(x - y));
+      big = std::max(big, std::max(std::abs(x), std::abs(y)));
+    }
+  return err <= kNurbsJoinTol * big;
+}
+
+}  // namespace
+
+Status assemble_nurbs(const RationalBezierPatch* patches, int count, const NurbsBuffers& B,
+                      NurbsSize& size) {
+  if (Status st = nurbs_size(patches, count, size); st != Status::ok) return st;
+  if (B.cap_knots_u < size.knots_u() || B.cap_knots_v < size.knots_v() ||
+      B.cap_cp < size.cp_count())
+    return Status::buffer_too_small;
+  if (!B.knots_u || !B.knots_v || !B.cp) return Status::null_argument;
+  const int p = size.deg_u, q = size.deg_v, nu = size.nu, nv = size.nv, cv = size.cp_v;
+  const int row = q + 1;  // patch cp stride in i
+  // Pass 0: the patch scales (N3) and the checks; pass 1 writes.
+  double prev[kMaxExportVPieces], cur[kMaxExportVPieces];
+  double big = 0.0, norm = 1.0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int iu = 0; iu < nu; ++iu) {
+      for (int iv = 0; iv < nv; ++iv) {
+        const RationalBezierPatch& P = patches[iu * nv + iv];
+        double s = 1.0;
+        if (iv > 0) {  // left: its column j = q against our j = 0
+          const RationalBezierPatch& L = patches[iu * nv + iv - 1];
+          s = edge_ratio(L, q, row, cur[iv - 1], P, 0, row, p + 1);
+        } else if (iu > 0) {  // below: its row i = p against our i = 0
+          s = edge_ratio(patches[(iu - 1) * nv], p * row, 1, prev[0], P, 0, 1, q + 1);
+        }
+        if (!(s > 0.0) || !std::isfinite(s)) return Status::numerical_overflow;
+        cur[iv] = s;
+        if (pass == 0) {
+          if (iv > 0 &&
+              !edge_agrees(patches[iu * nv + iv - 1], q, row, cur[iv - 1], P, 0, row, s, p + 1))
+            return Status::numerical_overflow;
+          if (iu > 0 &&
+              !edge_agrees(patches[(iu - 1) * nv + iv], p * row, 1, prev[iv], P, 0, 1, s, q + 1))
+            return Status::numerical_overflow;
+          for (int k = 0; k < (p + 1) * row; ++k) {
+            const double w = s * P.cp[k][0];
+            if (!(w > 0.0) || !std::isfinite(w)) return Status::numerical_overflow;
+            big = std::max(big, w);
+          }
+          continue;
+        }
+        for (int i = 0; i <= p; ++i)
+          for (int j = 0; j <= q; ++j) {
+            if ((i == 0 && iu > 0) || (j == 0 && iv > 0)) continue;  // the earlier patch's
+            double* out = B.cp[(iu * p + i) * cv + iv * q + j];
+            for (int c = 0; c < 4; ++c) out[c] = norm * s * P.cp[i * row + j][c];
+          }
+      }
+      std::copy(cur, cur + nv, prev);
+    }
+    if (pass == 0) {
+      int e = 0;
+      std::frexp(big, &e);
+      norm = std::ldexp(1.0, -e);
+    }
+  }
+  // (N2): clamped knots, multiplicity = degree inside.
+  int k = 0;
+  for (int iu = 0; iu <= nu; ++iu) {
+    const double u = iu < nu ? patches[iu * nv].u0 : patches[(nu - 1) * nv].u1;
+    for (int r = 0; r < (iu == 0 || iu == nu ? p + 1 : p); ++r) B.knots_u[k++] = u;
+  }
+  k = 0;
+  for (int iv = 0; iv <= nv; ++iv) {
+    const double t = export_tau_of_v(iv < nv ? patches[iv].v0 : patches[nv - 1].v1);
+    for (int r = 0; r < (iv == 0 || iv == nv ? q + 1 : q); ++r) B.knots_v[k++] = t;
+  }
+  return Status::ok;
+}
+
+namespace {
+
+// The span k (U[k] <= x < U[k + 1], the last one closed) of a clamped knot
+// vector with n control points and degree p; x clamped.
+int find_span(const double* U, int n, int p, double& x) {
+  x = std::min(U[n], std::max(U[p], x));
+  const int k = int(std::upper_bound(U + p, U + n, x) - U) - 1;
+  return std::min(n - 1, std::max(p, k));
+}
+
+// de Boor on d[0..p] (the points k - p .. k) at x.
+void de_boor(const double* U, int p, int k, double x, double (*d)[4]) {
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      const double den = U[j + 1 + k - r] - U[j + k - p];
+      const double al = den > 0.0 ? (x - U[j + k - p]) / den : 0.0;
+      for (int c = 0; c < 4; ++c) d[j][c] = (1.0 - al) * d[j - 1][c] + al * d[j][c];
+    }
+}
+
+}  // namespace
+
+void nurbs_eval_homogeneous(const NurbsView& N, double u, double tau, double (&h)[4]) {
+  const int p = N.size.deg_u, q = N.size.deg_v;
+  const int ku = find_span(N.knots_u, N.size.cp_u, p, u);
+  const int kv = find_span(N.knots_v, N.size.cp_v, q, tau);
+  double col[3][4];
+  double d[kMaxExportDegree + 1][4];
+  for (int jv = 0; jv <= q; ++jv) {
+    const int c = kv - q + jv;
+    for (int i = 0; i <= p; ++i)
+      for (int m = 0; m < 4; ++m) d[i][m] = N.cp[(ku - p + i) * N.size.cp_v + c][m];
+    de_boor(N.knots_u, p, ku, u, d);
+    for (int m = 0; m < 4; ++m) col[jv][m] = d[p][m];
+  }
+  de_boor(N.knots_v, q, kv, tau, col);
+  for (int m = 0; m < 4; ++m) h[m] = col[q][m];
+}
+
+Vec3d nurbs_point(const NurbsView& N, double u, double tau) {
+  double h[4];
+  nurbs_eval_homogeneous(N, u, tau, h);
+  return Vec3d(h[1] / h[0], h[2] / h[0], h[3] / h[0]);
 }
 
 }  // namespace v0

@@ -1993,9 +1993,9 @@ typedef struct cyc_bezier_patch_info {
 typedef struct cyc_bezier_export cyc_bezier_export;
 
 /** The tensor-product rational Bezier patches that are the surface over
- *  the domain (SPEC §8j.1; kinds PRCS, PRRS and ringed; Dupin and parabolic
- *  surfaces give CYC_E_UNSUPPORTED in this version): weights > 0, each
- *  patch checked against the evaluator. CYC_E_NOT_FINITE, CYC_E_BAD_DOMAIN,
+ *  the domain (SPEC §8j.1; every surface kind: PRCS, PRRS and ringed of
+ *  degree (m, 2), Dupin and parabolic cyclides of degree (2, 2)): weights
+ *  > 0, each patch checked against the evaluator. CYC_E_NOT_FINITE, CYC_E_BAD_DOMAIN,
  *  CYC_E_DEGREE_TOO_HIGH, CYC_E_POINT_AT_INFINITY (the surface passes
  *  through infinity in the domain), CYC_E_NUMERICAL_OVERFLOW,
  *  CYC_E_OUT_OF_MEMORY. *out is written only on success. */
@@ -2015,6 +2015,31 @@ CYC_API int cyc_bezier_export_patch(cyc_context* ctx, const cyc_bezier_export* e
  *  surface parameters (u, v) of that point (uv may be NULL). */
 CYC_API int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int index,
                                    double s, double t, double x[3], double uv[2]);
+
+/** The sizes of the export's NURBS form (SPEC §8j.1a). */
+typedef struct cyc_nurbs_size {
+  int deg_u, deg_v;
+  int cp_u, cp_v;         /* control points in u and v (cp_u * cp_v in all) */
+  int knots_u, knots_v;   /* cp + deg + 1 each */
+} cyc_nurbs_size;
+
+/** The export's patches as one clamped tensor-product NURBS: knots in u
+ *  (the surface's u) and in tau (tau = v for |v| <= 1, 2 sign(v) - 1/v
+ *  beyond: tau in [-2, 2], both ends v = infinity), interior knots of
+ *  multiplicity = degree (C0 joins), control points control[4 (i cp_v +
+ *  j) + 0..3] = (w, w x, w y, w z) with shared patch edges merged. A size
+ *  query with NULL arrays (and 0 capacities) writes only *size; too small
+ *  capacities give CYC_E_BUFFER_TOO_SMALL with *size written.
+ *  CYC_E_NUMERICAL_OVERFLOW if neighbouring patches disagree on a shared
+ *  edge. Allocation-free. */
+CYC_API int cyc_bezier_export_nurbs(cyc_context* ctx, const cyc_bezier_export* e,
+                                    cyc_nurbs_size* size, double* knots_u, size_t knots_u_cap,
+                                    double* knots_v, size_t knots_v_cap, double* control,
+                                    size_t control_cap);
+/** tau of (SPEC §8j.1a) for a circle parameter v (+-infinity gives +-2)
+ *  and its inverse (tau = +-2 gives +-HUGE_VAL; clamped to [-2, 2]). */
+CYC_API double cyc_export_tau_of_v(double v);
+CYC_API double cyc_export_v_of_tau(double tau);
 
 /* ---- writers (issue 9 item 2) */
 
