@@ -1701,7 +1701,10 @@ static void write_glb(cyc_context* ctx, const char* dir, const char* name, const
   cyc_mesh_stats st;
   o.weld_tolerance = -1;
   o.name = name;
-  snprintf(path, sizeof path, "%s/gallery/models/%s.glb", dir, name);
+  if (snprintf(path, sizeof path, "%s/gallery/models/%s.glb", dir, name) >= (int)sizeof path) {
+    fprintf(stderr, "gallery: path too long\n");
+    exit(1);
+  }
   check(ctx, cyc_mesh_write(ctx, path, CYC_MESH_GLB, g, n, &o, &st), "cyc_mesh_write");
   snprintf(stats_line, stats_size,
            "mesh: %zu vertices, %zu triangles, %d grids, %d rows welded across joins",
@@ -1717,11 +1720,16 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
   FILE* f;
   size_t i;
   int m, k, first = 1;
-  snprintf(path, sizeof path, "%s/gallery", dir);
+  if (snprintf(path, sizeof path, "%s/gallery/models", dir) >= (int)sizeof path - 16) {
+    fprintf(stderr, "gallery: path too long\n");
+    exit(1);
+  }
+  path[strlen(path) - strlen("/models")] = '\0';
+  make_dir(path); /* DIR/gallery */
+  strcat(path, "/models");
   make_dir(path);
-  snprintf(path, sizeof path, "%s/gallery/models", dir);
-  make_dir(path);
-  snprintf(path, sizeof path, "%s/gallery/gallery.json", dir);
+  path[strlen(path) - strlen("/models")] = '\0';
+  strcat(path, "/gallery.json");
   f = fopen(path, "w");
   if (!f) {
     perror(path);
@@ -1758,7 +1766,7 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
     json_string(f, ns ? seed_of(sec[shown[0]].header) : "000");
     fprintf(f, ", \"section\": ");
     json_string(f, ns ? sec[shown[0]].header : "");
-    fprintf(f, ", \"glb\": \"models/%s.glb\", \"residuals\": [", S->name);
+    fprintf(f, ", \"glb\": \"models/%s.glb\", \"up\": \"z\", \"residuals\": [", S->name);
     json_string(f, stats);
     for (j = 0; j < ns; ++j) {
       fputc(',', f);
@@ -1779,7 +1787,7 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
     json_string(f, s >= 0 ? seed_of(sec[s].header) : "000");
     fprintf(f, ", \"section\": ");
     json_string(f, s >= 0 ? sec[s].header : "");
-    fprintf(f, ", \"glb\": \"models/%s.glb\", \"residuals\": [", M->name);
+    fprintf(f, ", \"glb\": \"models/%s.glb\", \"up\": \"z\", \"residuals\": [", M->name);
     json_string(f, stats);
     if (s >= 0) {
       fputc(',', f);

@@ -60,7 +60,7 @@ void binomial_row(int n, Real* row) {
 }
 
 double eval(const BPoly& p, double s) {  // de Casteljau
-  Real t[kCap + 1];
+  Real t[kCap + 1] = {};  // (zeroed: GCC -O3 cannot see the loop fill it)
   for (int i = 0; i <= p.deg; ++i) t[i] = p.c[i];
   for (int r = p.deg; r > 0; --r)
     for (int i = 0; i < r; ++i) t[i] = (1.0 - s) * t[i] + s * t[i + 1];
@@ -70,7 +70,7 @@ double eval(const BPoly& p, double s) {  // de Casteljau
 // c[0..n] restricted to [a, b] subset [0, 1] by two de Casteljau splits.
 template <class R>
 void restrict_to(const R* c, int n, double a, double b, R* r) {
-  R t[kCap + 1];
+  R t[kCap + 1] = {};  // (zeroed: GCC -O3 cannot see the loop fill it)
   for (int i = 0; i <= n; ++i) t[i] = c[i];
   if (b < 1.0) {  // left part [0, b]
     R left[kCap + 1];
