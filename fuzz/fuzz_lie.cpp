@@ -538,7 +538,9 @@ double theta_defect(const cyc_dupin& D) {
   return double(worst) / std::max(1.0, th * th);
 }
 
-// The rational normal n = n^_123 / (n^ . er) is unit only up to rounding:
+// The rational normal n = n^_123 / (n^ . er) is unit only up to rounding
+// (the core now divides the plane by |n|, so it is unit to eps; the bound
+// below stays as the harness's independent estimate):
 // |n|^2 - 1 = (n^_- - n^_+)(n^_- + n^_+) / n^_r^2, and n^ . n_inf = n^_+ -
 // n^_- = 0 holds to the rounding of its terms, so |n| - 1 ~ eps (1 +
 // lambda^2) kappa (lambda the tangent plane's offset). Reported as a core
@@ -558,7 +560,7 @@ void check_unit_normal(const char* fn, const cyc_dupin& D, double x0, double x1,
   // At least 1e-9: near-degenerate constructions (three nearly equal
   // spheres, e.g. a spindle torus with core radius 0.005 and tube 1.16,
   // regress-spindle-normal) lose eps / separation^2, which kappa does not
-  // see; the core does not renormalize n (reported).
+  // see.
   const double tol = std::max(1e-9, (1e-12 * far(p) + 1e3 * theta_defect(D)) *
                                         std::max(1.0, kappa) * (1 + lambda * lambda));
   FZ_CHECK(std::abs(fz::norm3(n) - 1) <= tol,

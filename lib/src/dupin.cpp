@@ -301,6 +301,15 @@ Status point_and_normal(const Lie6d& H, const Lie6d& N, Vec3d& c, double& w, Vec
   if (!(std::abs(s) > kDupinInfinityTol * N.norm())) return Status::singular_point;
   n = N.head<3>() / s;
   lambda = N[kEPlus] / s;
+  // n is unit in exact arithmetic (n^ . n_inf = 0), but the terms of
+  // |n|^2 - 1 = (n^_- - n^_+)(n^_- + n^_+) / s^2 cancel, so rounding leaves
+  // up to ~1e-9 (fuzz_lie, regress-dupin-normal-unit). Dividing the plane
+  // (n, lambda) by |n| makes n unit to eps and keeps the plane.
+  const double m = n.norm();
+  if (m > 0 && std::isfinite(m)) {
+    n /= m;
+    lambda /= m;
+  }
   return Status::ok;
 }
 
