@@ -410,9 +410,6 @@ void op_pn(State& st) {
     return;
   }
   FZ_CHECK(S != nullptr, "pn create: OK but NULL");
-  const auto dot = [](const double* a, const double* b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
   const int nq = in.range(1, 4);
   for (int q = 0; q < nq; ++q) {
     const double u = in.rarely() ? value(in, moderate) : in.range(0, 16) / 16.0;
@@ -433,12 +430,12 @@ void op_pn(State& st) {
     const double* n = P.normal;
     FZ_CHECK(std::fabs(fz::norm3(n) - 1) <= 1e-12, "pn normal not unit: %.17g", fz::norm3(n));
     const double xu = fz::norm3(P.x_u), xv = fz::norm3(P.x_v), L = 1 + fz::norm3(P.point);
-    FZ_CHECK(std::fabs(dot(n, P.x_u)) <= 1e-7 * (xu + L) &&
-                 std::fabs(dot(n, P.x_v)) <= 1e-7 * (xv + L),
+    FZ_CHECK(std::fabs(fz::dot3(n, P.x_u)) <= 1e-7 * (xu + L) &&
+                 std::fabs(fz::dot3(n, P.x_v)) <= 1e-7 * (xv + L),
              "pn normal not orthogonal to the partials: %.3g %.3g (|x_u| %.3g |x_v| %.3g)",
-             dot(n, P.x_u), dot(n, P.x_v), xu, xv);
-    FZ_CHECK(std::fabs(P.plane.e0 + dot(P.plane.e, P.point)) <= 1e-9 * (L + std::fabs(P.plane.e0)),
-             "pn point off its plane by %.3g", P.plane.e0 + dot(P.plane.e, P.point));
+             fz::dot3(n, P.x_u), fz::dot3(n, P.x_v), xu, xv);
+    FZ_CHECK(std::fabs(P.plane.e0 + fz::dot3(P.plane.e, P.point)) <= 1e-9 * (L + std::fabs(P.plane.e0)),
+             "pn point off its plane by %.3g", P.plane.e0 + fz::dot3(P.plane.e, P.point));
     if (d == 0.0) continue;
     poison(Q);
     const int r1 = cyc_pn_surface_eval(st.ctx, S, u, v, d, &Q);
