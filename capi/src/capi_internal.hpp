@@ -13,6 +13,7 @@
 #include "cyclide/cyclide.h"
 #include "cyclide/blend.hpp"
 #include "cyclide/pcurve.hpp"
+#include "cyclide/rational_export.hpp"
 #include "cyclide/surface.hpp"
 
 using cyclide::RationalCurve;
@@ -37,6 +38,29 @@ struct cyc_surface {
   cyc_allocator allocator;
   Surface surface;
 };
+
+// An exact rational Bezier export (export_c.cpp, skin_export_c.cpp): a
+// header and the patches in one allocation.
+struct cyc_bezier_export {
+  cyc_allocator allocator;
+  int count;
+  cyclide::RationalBezierPatch* patches;  // count entries right after the header
+};
+
+// One block for an export of count patches (0 < count <=
+// CYC_MAX_EXPORT_PATCHES), the patches uninitialized; null if the
+// allocator fails. Freed by cyc_bezier_export_destroy.
+inline cyc_bezier_export* allocate_export(const cyc_allocator& a, int count) {
+  using P = cyclide::RationalBezierPatch;
+  const size_t head = (sizeof(cyc_bezier_export) + alignof(P) - 1) / alignof(P) * alignof(P);
+  void* mem = a.alloc(a.userdata, head + size_t(count) * sizeof(P), alignof(P));
+  if (!mem) return nullptr;
+  auto* E = new (mem) cyc_bezier_export;
+  E->allocator = a;
+  E->count = count;
+  E->patches = reinterpret_cast<P*>(static_cast<char*>(mem) + head);
+  return E;
+}
 
 
 namespace cyclide {

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <limits>
 
 #include "capi_internal.hpp"
 #include "cyclide/mesh_io.hpp"
@@ -15,13 +14,6 @@
 
 using namespace cyclide;
 using namespace cyclide::capi;
-
-// The export handle: a header and the patches in one allocation.
-struct cyc_bezier_export {
-  cyc_allocator allocator;
-  int count;
-  RationalBezierPatch* patches;  // count entries right after the header
-};
 
 namespace {
 
@@ -185,21 +177,15 @@ int cyc_bezier_export_create(cyc_context* ctx, const cyc_surface* surface,
                     fn, D.u0, D.u1, D.v0, D.v1, S.u0, S.u1);
       return from_core(fn, s);
     }
-    // One block: the header, then the patches (aligned).
-    const std::size_t head =
-        (sizeof(cyc_bezier_export) + alignof(RationalBezierPatch) - 1) /
-        alignof(RationalBezierPatch) * alignof(RationalBezierPatch);
-    if (std::size_t(count) > (std::numeric_limits<std::size_t>::max() - head) /
-                                  sizeof(RationalBezierPatch))
-      return fail(CYC_E_OUT_OF_MEMORY, "%s: %d patches do not fit in memory", fn, count);
-    const std::size_t bytes = head + std::size_t(count) * sizeof(RationalBezierPatch);
+    if (count > CYC_MAX_EXPORT_PATCHES)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: the domain needs %d patches, more than CYC_MAX_EXPORT_PATCHES = %d; "
+                  "export smaller rectangles",
+                  fn, count, CYC_MAX_EXPORT_PATCHES);
     const cyc_allocator a = ctx->allocator;
-    void* mem = a.alloc(a.userdata, bytes, alignof(RationalBezierPatch));
-    if (!mem) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
-    auto* E = new (mem) cyc_bezier_export;
-    E->allocator = a;
-    E->count = count;
-    E->patches = reinterpret_cast<RationalBezierPatch*>(static_cast<char*>(mem) + head);
+    cyc_bezier_export* E = allocate_export(a, count);
+    if (!E) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+    void* mem = E;
     int written = 0;
     const Status s = export_rational_bezier(S, D, E->patches, count, written);
     if (s != Status::ok || written != count) {

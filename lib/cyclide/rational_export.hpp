@@ -118,6 +118,11 @@ constexpr int kMaxExportDepth = 16;
 // Most v-pieces (u-intervals) of one export.
 constexpr int kMaxExportVPieces = 128;
 constexpr int kMaxExportUPieces = 512;
+// Largest degree along v: 2 for circle families, 4 for sphere skins
+// (skin_export.hpp). A patch holds at most kPatchControlPoints control
+// points, (deg_u + 1)(deg_v + 1) <= kPatchControlPoints.
+constexpr int kMaxExportDegreeV = 4;
+constexpr int kPatchControlPoints = (kMaxExportDegree + 1) * 3;
 // Patches must reproduce Surface::eval to this, relative to their size.
 constexpr double kExportCheckTol = 1e-9;
 
@@ -133,7 +138,7 @@ struct RationalBezierPatch {
   bool reciprocal_v = false;
   // Homogeneous control point (w, w x, w y, w z) of (i, j), i = 0..deg_u,
   // j = 0..deg_v, at cp[i * (deg_v + 1) + j]. Every w > 0.
-  double cp[(kMaxExportDegree + 1) * 3][4];
+  double cp[kPatchControlPoints][4];
 };
 
 // What to export: u in [u0, u1] (inside the surface's domain) and v in

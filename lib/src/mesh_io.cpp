@@ -703,7 +703,7 @@ Status write_rational_bezier_json(std::FILE* f, const RationalBezierPatch* patch
   for (int k = 0; k < count; ++k) {
     const RationalBezierPatch& P = patches[k];
     if (P.deg_u < 0 || P.deg_v < 0 || P.deg_u > kMaxExportDegree ||
-        (P.deg_u + 1) * (P.deg_v + 1) > (kMaxExportDegree + 1) * 3)
+        (P.deg_u + 1) * (P.deg_v + 1) > kPatchControlPoints)
       return Status::invalid_argument;
     if (!std::isfinite(P.u0) || !std::isfinite(P.u1) || std::isnan(P.v0) || std::isnan(P.v1))
       return Status::not_finite;

@@ -566,9 +566,9 @@ void patch_parameters(const RationalBezierPatch& P, double s, double t, double& 
 
 void patch_eval_homogeneous(const RationalBezierPatch& P, double s, double t, double (&h)[4]) {
   const int m = P.deg_u, nv = P.deg_v + 1;
-  double col[3][4];
+  double col[kMaxExportDegreeV + 1][4];
   double tmp[kCap + 1][4];
-  for (int j = 0; j < nv && j < 3; ++j) {
+  for (int j = 0; j < nv && j <= kMaxExportDegreeV; ++j) {
     for (int i = 0; i <= m; ++i)
       for (int c = 0; c < 4; ++c) tmp[i][c] = P.cp[i * nv + j][c];
     for (int r = m; r > 0; --r)
@@ -706,7 +706,8 @@ Status nurbs_size(const RationalBezierPatch* patches, int count, NurbsSize& size
   while (nv < count && patches[nv].u0 == P0.u0 && patches[nv].u1 == P0.u1) ++nv;
   if (nv > kMaxExportVPieces || count % nv != 0) return Status::invalid_argument;
   const int nu = count / nv;
-  if (P0.deg_u < 1 || P0.deg_u > kMaxExportDegree || P0.deg_v < 1 || P0.deg_v > 2)
+  if (P0.deg_u < 1 || P0.deg_u > kMaxExportDegree || P0.deg_v < 1 ||
+      P0.deg_v > kMaxExportDegreeV || (P0.deg_u + 1) * (P0.deg_v + 1) > kPatchControlPoints)
     return Status::invalid_argument;
   for (int iu = 0; iu < nu; ++iu)
     for (int iv = 0; iv < nv; ++iv) {
@@ -856,7 +857,7 @@ void nurbs_eval_homogeneous(const NurbsView& N, double u, double tau, double (&h
   const int p = N.size.deg_u, q = N.size.deg_v;
   const int ku = find_span(N.knots_u, N.size.cp_u, p, u);
   const int kv = find_span(N.knots_v, N.size.cp_v, q, tau);
-  double col[3][4];
+  double col[kMaxExportDegreeV + 1][4];
   double d[kMaxExportDegree + 1][4];
   for (int jv = 0; jv <= q; ++jv) {
     const int c = kv - q + jv;

@@ -1990,6 +1990,8 @@ typedef struct cyc_bezier_patch_info {
 
 /** An exact rational Bezier export (opaque; creation tier: allocated
  *  through the context, about 15.5 KiB per patch). */
+/** The most patches one export may hold (about 62 MiB). */
+#define CYC_MAX_EXPORT_PATCHES 4096
 typedef struct cyc_bezier_export cyc_bezier_export;
 
 /** The tensor-product rational Bezier patches that are the surface over
@@ -1998,6 +2000,7 @@ typedef struct cyc_bezier_export cyc_bezier_export;
  *  > 0, each patch checked against the evaluator. CYC_E_NOT_FINITE, CYC_E_BAD_DOMAIN,
  *  CYC_E_DEGREE_TOO_HIGH, CYC_E_POINT_AT_INFINITY (the surface passes
  *  through infinity in the domain), CYC_E_NUMERICAL_OVERFLOW,
+ *  CYC_E_INVALID_ARGUMENT (more than CYC_MAX_EXPORT_PATCHES patches),
  *  CYC_E_OUT_OF_MEMORY. *out is written only on success. */
 CYC_API int cyc_bezier_export_create(cyc_context* ctx, const cyc_surface* surface,
                                      const cyc_export_domain* domain, cyc_bezier_export** out);
