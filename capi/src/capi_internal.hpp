@@ -14,6 +14,7 @@
 #include "cyclide/blend.hpp"
 #include "cyclide/pcurve.hpp"
 #include "cyclide/rational_export.hpp"
+#include "cyclide/sphere_skin.hpp"
 #include "cyclide/surface.hpp"
 
 using cyclide::RationalCurve;
@@ -37,6 +38,14 @@ struct cyc_curve {
 struct cyc_surface {
   cyc_allocator allocator;
   Surface surface;
+};
+
+// A sphere skin (sphere_skin_c.cpp): the handle owns count patches in one
+// array from the context's allocator.
+struct cyc_sphere_skin {
+  cyc_allocator allocator;
+  int count = 0;
+  cyclide::SphereSkin* patches = nullptr;
 };
 
 // An exact rational Bezier export (export_c.cpp, skin_export_c.cpp): a

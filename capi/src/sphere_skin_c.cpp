@@ -28,12 +28,7 @@ static_assert(CYC_RMF_REFERENCE == int(RmfMethod::reference) &&
                   CYC_RMF_DOUBLE_REFLECTION == int(RmfMethod::double_reflection),
               "RMF methods");
 
-// The handle owns count patches in one array from the context's allocator.
-struct cyc_sphere_skin {
-  cyc_allocator allocator;
-  int count = 0;
-  SphereSkin* patches = nullptr;
-};
+// struct cyc_sphere_skin is in capi_internal.hpp (skin export and tessellation use it).
 
 namespace {
 
