@@ -214,6 +214,16 @@ double skin_magnitude(const SphereSkin& S);
 // (11)).
 double skin_lambda(const SphereSkin& S, double theta, double t, double* a = nullptr);
 
+// The skin as a trigonometric polynomial of degree 2 in theta (the exact
+// export, skin_export.hpp): with c = cos theta, s = sin theta,
+//   s(theta, t) = alpha(t) + (L0(t) + Lc(t) c + Ls(t) s) (c V1(t) + s V2(t)),
+// L0, Lc, Ls the cubics of lambda (6)-(11) with a_f(theta) expanded by the
+// addition theorem (L[a][k] the coefficient of t^k, a = 0, c, s), and V1,
+// V2 the directions w(t; 0), w(t; pi/2) (W1, W2 turned by delta s(t)).
+void skin_lambda_polynomials(const SphereSkin& S, double (&L)[3][4]);
+// V1(t), V2(t) (t in [0, 1], not checked).
+void skin_directions(const SphereSkin& S, double t, Vec3d& V1, Vec3d& V2);
+
 // The twist of the parameter curve theta against the RMF, measured on the
 // evaluated surface: the integral over [0, 1] of |omega| with omega =
 // ((s - alpha) x (s_t - alpha')) . t^ / |s - alpha|^2 (the rate at which

@@ -715,6 +715,35 @@ double skin_lambda(const SphereSkin& S, double theta, double t, double* a) {
   return hermite_lambda(H, ri, ai, rf, af);
 }
 
+void skin_lambda_polynomials(const SphereSkin& S, double (&L)[3][4]) {
+  // The cubic Hermite basis in power form (cubic_hermite_basis).
+  static constexpr double H[4][4] = {
+      {1, 0, -3, 2}, {0, 1, -2, 1}, {0, 0, 3, -2}, {0, 0, -1, 1}};
+  const double ri = S.ends[0].radius, rf = S.ends[1].radius;
+  const double* ai = S.a_coeff[0];
+  const double* af = S.a_coeff[1];
+  const double cd = std::cos(S.delta), sd = std::sin(S.delta);
+  // lambda = H0 ri - H1 ri a_i + H2 rf - H3 rf a_f with a_i = ai0 - c ai1 -
+  // s ai2 and a_f = af0 - c (cd af1 + sd af2) - s (cd af2 - sd af1).
+  const double w0[4] = {ri, -ri * ai[0], rf, -rf * af[0]};
+  const double wc[4] = {0, ri * ai[1], 0, rf * (cd * af[1] + sd * af[2])};
+  const double ws[4] = {0, ri * ai[2], 0, rf * (cd * af[2] - sd * af[1])};
+  for (int k = 0; k < 4; ++k) {
+    L[0][k] = L[1][k] = L[2][k] = 0.0;
+    for (int b = 0; b < 4; ++b) {
+      L[0][k] += w0[b] * H[b][k];
+      L[1][k] += wc[b] * H[b][k];
+      L[2][k] += ws[b] * H[b][k];
+    }
+  }
+}
+
+void skin_directions(const SphereSkin& S, double t, Vec3d& V1, Vec3d& V2) {
+  const SkinColumn c = column(S, t);
+  V1 = c.cturn * c.W1 + c.sturn * c.W2;  // w(t; 0): phi = delta s(t)
+  V2 = -c.sturn * c.W1 + c.cturn * c.W2;  // w(t; pi/2)
+}
+
 Status skin_eval(const SphereSkin& S, double theta, double t, double* x, double* x_theta,
                  double* x_t, double* normal) {
   if (!std::isfinite(theta) || !std::isfinite(t)) return Status::not_finite;
