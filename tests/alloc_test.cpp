@@ -20,6 +20,7 @@
 #include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/implicitize.hpp"
+#include "cyclide/skin_export.hpp"
 #include "cyclide/sphere_skin.hpp"
 #include "cyclide/surface.hpp"
 
@@ -732,6 +733,33 @@ TEST(AllocFreeCore, SphereSkin) {
     }
   });
   EXPECT_EQ(bad, 0);
+  EXPECT_EQ(h.allocations, 0);
+  EXPECT_EQ(h.frees, 0);
+}
+
+// Issue 9: the export of a sphere skin chain (skin_export.hpp: the frame's
+// interpolation matrix is a fixed-capacity Eigen matrix) allocates nothing.
+TEST(AllocFreeCore, SkinExport) {
+  using namespace cyclide;
+  SkinEnd ends[3];
+  ASSERT_EQ(skin_end_from_sphere({0, 0, 0}, 1.0, {0.3, 0, 0}, {3, 0, 0}, ends[0]), Status::ok);
+  const Vec3d ax = Vec3d(1, 0.5, 0.3).normalized();
+  ASSERT_EQ(skin_end_from_sphere({4, 1, 0}, 0.8, Vec3d(4, 1, 0) - 0.1 * ax, 3.0 * ax, ends[1]),
+            Status::ok);
+  ASSERT_EQ(skin_end_from_sphere({7, 3, 1}, 1.1, {7, 3, 1}, {3, 1, 1}, ends[2]), Status::ok);
+  static SphereSkin chain[2];
+  ASSERT_EQ(make_sphere_skin_chain(ends, 3, SkinOptions{}, chain), Status::ok);
+  static RationalBezierPatch P[256];
+  int count = 0, bad = 0;
+  SkinExportReport r;
+  const Heap h = measure([&] {
+    bad += export_sphere_skin(chain, 2, ExportDomain::circles(0, 2), SkinExportOptions{}, P, 256,
+                              count, &r) != Status::ok;
+    bad += export_sphere_skin(chain, 2, ExportDomain::rectangle(0.5, 1.5, -2, 3),
+                              SkinExportOptions{}, P, 256, count, &r) != Status::ok;
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(count, 0);
   EXPECT_EQ(h.allocations, 0);
   EXPECT_EQ(h.frees, 0);
 }

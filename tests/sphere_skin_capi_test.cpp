@@ -4,15 +4,18 @@
 // the context's allocator and out-of-memory.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "cyclide/cyclide.h"
+#include "cyclide/skin_export.hpp"
 #include "cyclide/sphere_skin.hpp"
 
 using cyclide::make_sphere_skin;
@@ -756,4 +759,112 @@ TEST_F(SkinCapi, GridOverflowsWhereEvalOverflows) {
             CYC_E_NUMERICAL_OVERFLOW);
   EXPECT_EQ(singular, 77u);
   EXPECT_TRUE(untouched(P, 12) && untouched(N, 12) && untouched(x, 3));
+}
+
+// Issue 9 (SPEC.md §8j.1b): the export of a chain through the C ABI is the
+// core's export, evaluates onto the skin within the tolerance at the
+// reported (u, v) (u = patch + t, theta = 2 atan v), assembles into one
+// NURBS, writes JSON, and every error leaves *out and *report untouched.
+TEST_F(SkinCapi, ExportOfAChain) {
+  cyc_skin_end ends[3];
+  chain_ends(ends);
+  cyc_sphere_skin* h = nullptr;
+  ASSERT_EQ(cyc_sphere_skin_chain_create(ctx, ends, 3, nullptr, &h, nullptr), CYC_OK);
+  owned.push_back(h);
+  cyc_skin_export_options o;
+  cyc_skin_export_options_default(&o);
+  EXPECT_EQ(o.tolerance, cyclide::SkinExportOptions{}.tolerance);
+  EXPECT_EQ(o.degree, cyclide::SkinExportOptions{}.degree);
+  const cyc_export_domain whole = {0, 2, 0, 0, 1};
+  cyc_bezier_export* E = nullptr;
+  cyc_skin_export_report r{};
+  ASSERT_EQ(cyc_sphere_skin_export_create(ctx, h, &whole, &o, &E, &r), CYC_OK)
+      << cyc_context_last_error(ctx);
+  const int n = cyc_bezier_export_count(E);
+  EXPECT_EQ(n, 4 * r.t_intervals);
+  EXPECT_EQ(r.exact, 0);
+  EXPECT_LE(r.error_estimate, 2 * o.tolerance);
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    cyc_bezier_patch_info info;
+    ASSERT_EQ(cyc_bezier_export_patch(ctx, E, i, &info, nullptr, 0), CYC_OK);
+    EXPECT_EQ(info.deg_u, o.degree + 3);
+    EXPECT_EQ(info.deg_v, 4);
+    for (double st : {0.0, 0.37, 1.0})
+      for (double tt : {0.0, 0.61, 1.0}) {
+        double x[3], uv[2], y[3];
+        ASSERT_EQ(cyc_bezier_export_eval(ctx, E, i, st, tt, x, uv), CYC_OK);
+        const int k = std::min(1, int(uv[0]));
+        ASSERT_EQ(cyc_sphere_skin_eval(ctx, h, k, 2 * std::atan(uv[1]),
+                                       std::min(1.0, uv[0] - k), y, nullptr, nullptr, nullptr),
+                  CYC_OK);
+        worst = std::max(worst, dist(x, y));
+      }
+  }
+  EXPECT_LE(worst, 2 * o.tolerance);
+  cyc_nurbs_size N;
+  ASSERT_EQ(cyc_bezier_export_nurbs(ctx, E, &N, nullptr, 0, nullptr, 0, nullptr, 0), CYC_OK);
+  EXPECT_EQ(N.deg_v, 4);
+  std::vector<double> ku(size_t(N.knots_u)), kv(size_t(N.knots_v)),
+      cp(4 * size_t(N.cp_u) * size_t(N.cp_v));
+  EXPECT_EQ(cyc_bezier_export_nurbs(ctx, E, &N, ku.data(), ku.size(), kv.data(), kv.size(),
+                                    cp.data(), cp.size()),
+            CYC_OK)
+      << cyc_context_last_error(ctx);
+  const std::string path = ::testing::TempDir() + "skin_export.json";
+  ASSERT_EQ(cyc_bezier_export_write_json(ctx, E, path.c_str()), CYC_OK);
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  ASSERT_NE(f, nullptr);
+  char head[64] = {0};
+  EXPECT_GT(std::fread(head, 1, sizeof head - 1, f), 0u);
+  std::fclose(f);
+  EXPECT_TRUE(contains(head, "cyclide-rational-bezier")) << head;
+  std::remove(path.c_str());
+  cyc_bezier_export_destroy(E);
+
+  // Errors: nothing written.
+  cyc_bezier_export* const kOut = reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed0bad1000));
+  const auto fails = [&](const cyc_export_domain& d, const cyc_skin_export_options* op,
+                         int want, const char* what) {
+    cyc_bezier_export* out = kOut;
+    cyc_skin_export_report rep{};
+    rep.t_intervals = -9;
+    EXPECT_EQ(cyc_sphere_skin_export_create(ctx, h, &d, op, &out, &rep), want) << what;
+    EXPECT_EQ(out, kOut) << what;
+    EXPECT_EQ(rep.t_intervals, -9) << what;
+    EXPECT_TRUE(contains(cyc_context_last_error(ctx), "cyc_sphere_skin_export_create")) << what;
+  };
+  cyc_skin_export_options bad = o;
+  bad.tolerance = 0;
+  fails(whole, &bad, CYC_E_INVALID_ARGUMENT, "tolerance 0");
+  bad = o;
+  bad.degree = 25;
+  fails(whole, &bad, CYC_E_INVALID_ARGUMENT, "degree 25");
+  bad = o;
+  bad.tolerance = 1e-19;
+  fails(whole, &bad, CYC_E_NUMERICAL_OVERFLOW, "tolerance below rounding");
+  fails({0, 2.5, 0, 0, 1}, nullptr, CYC_E_BAD_DOMAIN, "u beyond the chain");
+  fails({0, 1, 1, -1, 0}, nullptr, CYC_E_BAD_DOMAIN, "v reversed");
+  fails({kNaN, 1, 0, 0, 1}, nullptr, CYC_E_NOT_FINITE, "NaN");
+  cyc_bezier_export* out = kOut;
+  EXPECT_EQ(cyc_sphere_skin_export_create(ctx, nullptr, &whole, nullptr, &out, nullptr),
+            CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_sphere_skin_export_create(ctx, h, nullptr, nullptr, &out, nullptr),
+            CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(out, kOut);
+  // A straight spine (coaxial circles) exports exactly.
+  const double m0[3] = {0, 0, 0}, p0[3] = {0.2, 0, 0}, t0[3] = {2, 0, 0};
+  const double m1[3] = {3, 0, 0}, p1[3] = {2.9, 0, 0};
+  cyc_skin_end a, b;
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &a), CYC_OK);
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m1, 0.5, p1, t0, &b), CYC_OK);
+  cyc_sphere_skin* straight = nullptr;
+  ASSERT_EQ(cyc_sphere_skin_create(ctx, &a, &b, nullptr, &straight), CYC_OK);
+  owned.push_back(straight);
+  const cyc_export_domain one = {0, 1, 0, 0, 1};
+  ASSERT_EQ(cyc_sphere_skin_export_create(ctx, straight, &one, nullptr, &E, &r), CYC_OK);
+  EXPECT_EQ(r.exact, 1);
+  EXPECT_EQ(r.t_intervals, 1);
+  EXPECT_LE(r.error_estimate, 1e-14);
+  cyc_bezier_export_destroy(E);
 }

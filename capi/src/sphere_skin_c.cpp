@@ -4,6 +4,7 @@
 // patches' info (allocation-free).
 #include "capi_internal.hpp"
 #include "cyclide/curve.hpp"
+#include "cyclide/skin_export.hpp"
 #include "cyclide/sphere_skin.hpp"
 
 #ifndef CYCLIDE_HAVE_CERES
@@ -472,6 +473,79 @@ int cyc_sphere_skin_lambda(cyc_context* ctx, const cyc_sphere_skin* skin, int pa
                   fn, theta, t);
     *lambda = l;
     if (a) a[0] = ends[0], a[1] = ends[1];
+    return ok();
+  });
+}
+
+// ------------------------------------------------------------ export (§8j.1b)
+
+void cyc_skin_export_options_default(cyc_skin_export_options* options) {
+  if (!options) return;
+  const SkinExportOptions o;
+  options->tolerance = o.tolerance;
+  options->degree = o.degree;
+}
+
+int cyc_sphere_skin_export_create(cyc_context* ctx, const cyc_sphere_skin* skin,
+                                  const cyc_export_domain* domain,
+                                  const cyc_skin_export_options* options, cyc_bezier_export** out,
+                                  cyc_skin_export_report* report) {
+  const char* fn = "cyc_sphere_skin_export_create";
+  return run(ctx, fn, [&] {
+    REQUIRE(skin);
+    REQUIRE(domain);
+    REQUIRE(out);
+    SkinExportOptions o;
+    if (options) {
+      o.tolerance = options->tolerance;
+      o.degree = options->degree;
+    }
+    if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance) || o.degree < 1 ||
+        o.degree > kMaxSkinExportDegree)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: tolerance = %.17g must be positive and finite, degree = %d in 1..%d", fn,
+                  o.tolerance, o.degree, kMaxSkinExportDegree);
+    const ExportDomain D =
+        domain->whole_circle
+            ? ExportDomain::circles(domain->u0, domain->u1)
+            : ExportDomain::rectangle(domain->u0, domain->u1, domain->v0, domain->v1);
+    int count = 0;
+    const Status s = export_sphere_skin(skin->patches, skin->count, D, o, nullptr, 0, count);
+    if (s == Status::bad_domain)
+      return fail(CYC_E_BAD_DOMAIN,
+                  "%s: [%.17g, %.17g] x [%.17g, %.17g] is empty or u leaves [0, %d] (u = patch + "
+                  "t, v = tan(theta / 2))",
+                  fn, D.u0, D.u1, D.v0, D.v1, skin->count);
+    if (s == Status::numerical_overflow)
+      return fail(CYC_E_NUMERICAL_OVERFLOW,
+                  "%s: tolerance %.3g cannot be met (below the skin's rounding, or more than %d "
+                  "t-intervals)",
+                  fn, o.tolerance, kMaxExportUPieces);
+    if (s != Status::buffer_too_small) return from_core(fn, s);
+    if (count > CYC_MAX_EXPORT_PATCHES)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: %d patches, more than CYC_MAX_EXPORT_PATCHES = %d; export smaller "
+                  "rectangles or raise the tolerance",
+                  fn, count, CYC_MAX_EXPORT_PATCHES);
+    const cyc_allocator a = ctx->allocator;
+    cyc_bezier_export* E = allocate_export(a, count);
+    if (!E) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
+    int written = 0;
+    SkinExportReport r;
+    const Status w = export_sphere_skin(skin->patches, skin->count, D, o, E->patches, count,
+                                        written, &r);
+    if (w != Status::ok || written != count) {
+      a.free(a.userdata, E);
+      return w == Status::ok ? fail(CYC_E_INTERNAL, "%s: patch count changed", fn)
+                             : from_core(fn, w);
+    }
+    if (report) {
+      report->error_estimate = r.error_estimate;
+      report->rmf_error = r.rmf_error;
+      report->exact = r.exact ? 1 : 0;
+      report->t_intervals = r.t_intervals;
+    }
+    *out = E;
     return ok();
   });
 }

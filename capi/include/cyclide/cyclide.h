@@ -2101,6 +2101,39 @@ CYC_API int cyc_mesh_write(cyc_context* ctx, const char* path, int format,
 CYC_API int cyc_bezier_export_write_json(cyc_context* ctx, const cyc_bezier_export* e,
                                          const char* path);
 
+/** Options of cyc_sphere_skin_export_create (cyc_skin_export_options_default
+ *  fills them). */
+typedef struct cyc_skin_export_options {
+  double tolerance; /* absolute distance to the skin, model units, > 0 (1e-9) */
+  int degree;       /* q, the frame's interpolation degree in t, 1..24 (7):
+                       patches of degree (q + 3, 4) */
+} cyc_skin_export_options;
+/** What cyc_sphere_skin_export_create achieved (SPEC.md §8j.1b). */
+typedef struct cyc_skin_export_report {
+  double error_estimate; /* largest distance export - skin: sampled bound and measured */
+  double rmf_error;      /* the skin's own RMF accuracy (unit vector error x max |lambda|) */
+  int exact;             /* 1: straight spines and the RMF pairing, rational: exact */
+  int t_intervals;       /* u-intervals (the patches are t_intervals x v-pieces) */
+} cyc_skin_export_report;
+CYC_API void cyc_skin_export_options_default(cyc_skin_export_options* options);
+/** The rational Bezier patches of a sphere skin or chain (SPEC.md §8j.1b),
+ *  into the export handle of cyc_bezier_export_create (so _count, _patch,
+ *  _eval, _nurbs, _write_json and _destroy apply): exact in theta, with
+ *  the export's v = tan(theta / 2) (theta = 2 atan v, v = +-inf is theta =
+ *  pi), and u = k + t on patch k of the chain (u in [0, patch count]); the
+ *  rotation-minimizing frame, not rational, is interpolated within
+ *  options->tolerance (exact when the spine is straight). options NULL:
+ *  the defaults; report may be NULL. CYC_E_INVALID_ARGUMENT (options out of
+ *  range, more than CYC_MAX_EXPORT_PATCHES patches), CYC_E_NOT_FINITE,
+ *  CYC_E_BAD_DOMAIN, CYC_E_NUMERICAL_OVERFLOW (the tolerance cannot be met,
+ *  e.g. below the skin's rounding), CYC_E_OUT_OF_MEMORY. *out and *report
+ *  are written only on success. */
+CYC_API int cyc_sphere_skin_export_create(cyc_context* ctx, const cyc_sphere_skin* skin,
+                                          const cyc_export_domain* domain,
+                                          const cyc_skin_export_options* options,
+                                          cyc_bezier_export** out,
+                                          cyc_skin_export_report* report);
+
 /* ======================================================================
  * Seed 004: Laguerre geometry, PN surfaces, parabolic Dupin cyclides, design
  * (Peternell-Pottmann, SPEC.md §8i). Plain values, allocation-free unless
