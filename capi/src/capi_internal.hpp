@@ -2,6 +2,7 @@
 // guard every entry point runs through, messages and buffer checks.
 #pragma once
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 
 #include "cyclide/cyclide.h"
 #include "cyclide/blend.hpp"
+#include "cyclide/config.hpp"
 #include "cyclide/pcurve.hpp"
 #include "cyclide/rational_export.hpp"
 #include "cyclide/sphere_skin.hpp"
@@ -263,6 +265,11 @@ int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
   do {                                                                  \
     if (!(ptr)) return fail(CYC_E_NULL_ARGUMENT, "%s: %s is NULL", fn, #ptr); \
   } while (0)
+
+// NaN, Inf or beyond the core's input range (kMaxInputMagnitude = 1e100):
+// the C layer's check of a double before it reaches the core, so its
+// message can name the value.
+inline bool beyond_input_range(double x) { return !(std::abs(x) <= kMaxInputMagnitude); }
 
 inline Vec3d vec(const double* p) { return Vec3d(p[0], p[1], p[2]); }
 

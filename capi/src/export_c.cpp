@@ -19,8 +19,6 @@ namespace {
 
 static_assert(CYC_MAX_CIRCLE_SEGMENTS == kMaxCircleSegments, "C and C++ bounds differ");
 
-bool bad(double x) { return !(std::abs(x) <= 1e100); }
-
 TessellationOptions core_options(const cyc_tessellation_options& o) {
   TessellationOptions t;
   t.chordal_tolerance = o.chordal_tolerance;
@@ -34,7 +32,7 @@ TessellationOptions core_options(const cyc_tessellation_options& o) {
 }
 
 Outcome check_options(const char* fn, const cyc_tessellation_options& o) {
-  if (!(o.chordal_tolerance > 0) || bad(o.chordal_tolerance))
+  if (!(o.chordal_tolerance > 0) || beyond_input_range(o.chordal_tolerance))
     return fail(std::isnan(o.chordal_tolerance) || std::isinf(o.chordal_tolerance)
                     ? CYC_E_NOT_FINITE
                     : CYC_E_INVALID_ARGUMENT,
@@ -52,7 +50,7 @@ Outcome check_options(const char* fn, const cyc_tessellation_options& o) {
     return fail(CYC_E_INVALID_ARGUMENT, "%s: initial_rows = %d is outside 2..65536", fn,
                 o.initial_rows);
   for (const double* r : {o.reference_u0, o.reference_u1})
-    if (r && (bad(r[0]) || bad(r[1]) || bad(r[2])))
+    if (r && (beyond_input_range(r[0]) || beyond_input_range(r[1]) || beyond_input_range(r[2])))
       return fail(CYC_E_NOT_FINITE, "%s: a reference vector is NaN, infinite or beyond 1e100",
                   fn);
   return ok();
@@ -132,7 +130,7 @@ int cyc_tessellate_eval(cyc_context* ctx, const cyc_surface* surface,
     if (plan->rows < 2 || plan->segments < 3 || plan->segments > CYC_MAX_CIRCLE_SEGMENTS)
       return fail(CYC_E_INVALID_ARGUMENT, "%s: plan has %d rows of %d segments", fn, plan->rows,
                   plan->segments);
-    if (bad(plan->phase0) || bad(plan->phase1))
+    if (beyond_input_range(plan->phase0) || beyond_input_range(plan->phase1))
       return fail(CYC_E_NOT_FINITE, "%s: plan phases are not finite", fn);
     const Surface& S = surface->surface;
     for (int i = 0; i < plan->rows; ++i)

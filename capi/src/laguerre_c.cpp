@@ -51,19 +51,16 @@ namespace {
 
 // ------------------------------------------------------------ inputs
 
-// NaN, Inf or beyond the core's input range (1e100).
-bool bad(double x) { return !(std::abs(x) <= kMaxInputMagnitude); }
-
 Outcome finite_in(const char* fn, const char* name, const double* x, int n) {
   for (int i = 0; i < n; ++i)
-    if (bad(x[i]))
+    if (beyond_input_range(x[i]))
       return fail(CYC_E_NOT_FINITE, "%s: %s[%d] = %.17g is NaN, infinite or beyond 1e100", fn,
                   name, i, x[i]);
   return ok();
 }
 
 Outcome scalar_in(const char* fn, const char* name, double x) {
-  if (bad(x))
+  if (beyond_input_range(x))
     return fail(CYC_E_NOT_FINITE, "%s: %s = %.17g is NaN, infinite or beyond 1e100", fn, name, x);
   return ok();
 }
@@ -77,7 +74,8 @@ OrientedPlane plane_in(const cyc_oriented_plane& p) {
 
 Outcome plane_checked(const char* fn, const char* name, const cyc_oriented_plane& p,
                       OrientedPlane& out) {
-  if (bad(p.e0)) return fail(CYC_E_NOT_FINITE, "%s: %s->e0 is NaN, infinite or beyond 1e100", fn, name);
+  if (beyond_input_range(p.e0))
+    return fail(CYC_E_NOT_FINITE, "%s: %s->e0 is NaN, infinite or beyond 1e100", fn, name);
   if (Outcome r = finite_in(fn, name, p.e, 3); r.status) return r;
   out = plane_in(p);
   return ok();
@@ -98,7 +96,7 @@ Outcome point_checked(const char* fn, const char* name, const cyc_isotropic_poin
   IsotropicPoint Y;
   Y.exceptional = y.exceptional == 1;
   if (Y.exceptional) {
-    if (bad(y.c))
+    if (beyond_input_range(y.c))
       return fail(CYC_E_NOT_FINITE, "%s: %s->c is NaN, infinite or beyond 1e100", fn, name);
     Y.c = y.c;
   } else {
@@ -113,7 +111,11 @@ Outcome point_checked(const char* fn, const char* name, const cyc_isotropic_poin
 Outcome point_out(const char* fn, const IsotropicPoint& Y, cyc_isotropic_point* out) {
   // Beyond 1e100 the point would not be accepted back as an input (e.g.
   // Lambda of a plane whose normal is within ~1e-50 of W): overflow.
-  if (Y.exceptional ? bad(Y.c) : (bad(Y.y[0]) || bad(Y.y[1]) || bad(Y.y[2])))
+  const bool out_of_range =
+      Y.exceptional ? beyond_input_range(Y.c)
+                    : (beyond_input_range(Y.y[0]) || beyond_input_range(Y.y[1]) ||
+                       beyond_input_range(Y.y[2]));
+  if (out_of_range)
     return fail(CYC_E_NUMERICAL_OVERFLOW,
                 "%s: the result is beyond 1e100 (not usable as an input)", fn);
   cyc_isotropic_point y;
@@ -877,7 +879,7 @@ int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* w
     const std::size_t ints = delaunay_workspace_size(n);
     int* iwork = carve<int>(at, ints);
     for (int i = 0; i < n; ++i) {
-      if (bad(pts[2 * i]) || bad(pts[2 * i + 1]))
+      if (beyond_input_range(pts[2 * i]) || beyond_input_range(pts[2 * i + 1]))
         return fail(CYC_E_NOT_FINITE, "%s: point %d is NaN, infinite or beyond 1e100", fn, i);
       p[i] = Vec2d(pts[2 * i], pts[2 * i + 1]);
     }
@@ -941,7 +943,9 @@ int cyc_powell_sabin_interpolate(cyc_context* ctx, const double* b, const double
     int* iwork = carve<int>(at, ints);
     QuadraticGraphTriangle* micro = carve<QuadraticGraphTriangle>(at, 6 * std::size_t(ntri));
     for (int i = 0; i < n; ++i) {
-      if (bad(b[2 * i]) || bad(b[2 * i + 1]) || bad(z[i]) || bad(g[2 * i]) || bad(g[2 * i + 1]))
+      if (beyond_input_range(b[2 * i]) || beyond_input_range(b[2 * i + 1]) ||
+          beyond_input_range(z[i]) || beyond_input_range(g[2 * i]) ||
+          beyond_input_range(g[2 * i + 1]))
         return fail(CYC_E_NOT_FINITE, "%s: datum %d is NaN, infinite or beyond 1e100", fn, i);
       B[i] = Vec2d(b[2 * i], b[2 * i + 1]);
       G[i] = Vec2d(g[2 * i], g[2 * i + 1]);
@@ -1082,7 +1086,7 @@ int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data,
       const double v[6] = {data[i].point[0],  data[i].point[1],  data[i].point[2],
                            data[i].normal[0], data[i].normal[1], data[i].normal[2]};
       for (int k = 0; k < 6; ++k)
-        if (bad(v[k])) {
+        if (beyond_input_range(v[k])) {
           rep.first_bad_datum = i;
           give_report();
           return fail(CYC_E_NOT_FINITE, "%s: datum %d is NaN, infinite or beyond 1e100", fn, i);
