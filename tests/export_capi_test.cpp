@@ -293,7 +293,8 @@ TEST_F(ExportCapi, MeshWriterWeldsSharedCirclesAndWritesAtomically) {
   std::vector<double> a, b;
   for (int i = 0; i < 3; ++i) ring(a, 24, 1, 0.5 * i, false);        // z = 0, 0.5, 1
   for (int i = 0; i < 3; ++i) ring(b, 24, 1, 1 + 0.5 * i, i == 0);  // z = 1 (reversed), ...
-  const cyc_grid_mesh g[2] = {{a.data(), nullptr, 3, 3, 24, 1}, {b.data(), nullptr, 3, 3, 24, 1}};
+  const cyc_grid_mesh g[2] = {{a.data(), nullptr, 3, 3, 24, 1, {0, 0, 0, 0}},
+                              {b.data(), nullptr, 3, 3, 24, 1, {0, 0, 0, 0}}};
   const std::string path = ::testing::TempDir() + "cyclide_two_cylinders.glb";
   std::remove(path.c_str());
   cyc_mesh_stats st;
@@ -316,9 +317,14 @@ TEST_F(ExportCapi, MeshWriterWeldsSharedCirclesAndWritesAtomically) {
             CYC_E_INVALID_ARGUMENT);
   std::vector<double> nan_pts = a;
   nan_pts[7] = kNaN;
-  const cyc_grid_mesh gn{nan_pts.data(), nullptr, 3, 3, 24, 1};
+  const cyc_grid_mesh gn{nan_pts.data(), nullptr, 3, 3, 24, 1, {0, 0, 0, 0}};
   EXPECT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_OBJ, &gn, 1, nullptr, nullptr),
             CYC_E_NOT_FINITE);
+  bad = g[0];
+  bad.rgba[3] = 2;
+  EXPECT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_GLB, &bad, 1, nullptr, nullptr),
+            CYC_E_INVALID_ARGUMENT);
+  expect_message("rgba[3]");
   EXPECT_EQ(read_file(path), glb);
   EXPECT_FALSE(exists(path + ".part"));
   // A directory that does not exist: CYC_E_IO.
@@ -333,6 +339,38 @@ TEST_F(ExportCapi, MeshWriterWeldsSharedCirclesAndWritesAtomically) {
     EXPECT_GT(read_file(p).size(), 100u);
     std::remove(p.c_str());
   }
+  std::remove(path.c_str());
+}
+
+// Each grid's colour reaches the glb: the palette by index when rgba is all
+// 0 (two grids, two materials), the caller's colour (linear in the file:
+// sRGB 0.5 is 0.214), one material for grids of one colour.
+TEST_F(ExportCapi, MeshWriterColoursEachGrid) {
+  std::vector<double> a, b;
+  for (int i = 0; i < 3; ++i) ring(a, 24, 1, 0.5 * i, false);
+  for (int i = 0; i < 3; ++i) ring(b, 24, 1, 1 + 0.5 * i, i == 0);
+  cyc_grid_mesh g[2] = {{a.data(), nullptr, 3, 3, 24, 1, {0, 0, 0, 0}},
+                        {b.data(), nullptr, 3, 3, 24, 1, {0, 0, 0, 0}}};
+  const std::string path = ::testing::TempDir() + "cyclide_coloured.glb";
+  const auto count = [](const std::string& text, const char* what) {
+    int n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  cyc_mesh_stats st;
+  ASSERT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_GLB, g, 2, nullptr, &st), CYC_OK);
+  EXPECT_EQ(st.welded_rows, 1);
+  std::string glb = read_file(path);
+  EXPECT_EQ(count(glb, "\"baseColorFactor\""), 2);
+  EXPECT_EQ(count(glb, "\"material\":"), 2);
+  for (cyc_grid_mesh& x : g) {
+    const float grey[4] = {0.5f, 0.5f, 0.5f, 1};
+    for (int c = 0; c < 4; ++c) x.rgba[c] = grey[c];
+  }
+  ASSERT_EQ(cyc_mesh_write(ctx, path.c_str(), CYC_MESH_GLB, g, 2, nullptr, &st), CYC_OK);
+  glb = read_file(path);
+  EXPECT_EQ(count(glb, "\"baseColorFactor\":[0.214041"), 1);
+  EXPECT_EQ(count(glb, "\"material\":"), 1);
   std::remove(path.c_str());
 }
 

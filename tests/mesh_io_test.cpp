@@ -314,6 +314,66 @@ TEST(MeshIo, WeldedJoinIsWatertight) {
   EXPECT_EQ(num(r3, "boundary_edges"), 2 * N);
 }
 
+// Colours: each grid of a write keeps its own colour (glb: a material and a
+// primitive per grid, all indexing the one welded vertex array; PLY: vertex
+// colours), so a join stays watertight and its parts stay apart.
+TEST(MeshIo, GridsKeepTheirColours) {
+  if (!have_reader()) GTEST_SKIP() << "python3 not found at configure time";
+  const int N = 12;
+  const Grid A = cylinder(5, N, 0, 1, 0, 1), B = cylinder(4, N, 1, 2, 3, -1);
+  // Defaults: the palette by grid index, two different colours.
+  MeshStats s;
+  auto r = round_trip(MeshFormat::glb, {A.view(), B.view()}, MeshWriteOptions(), s, "colours");
+  EXPECT_EQ(s.welded_rows, 1);
+  EXPECT_EQ(num(r, "boundary_edges"), 2 * N);  // still one welded mesh
+  EXPECT_EQ(num(r, "primitives"), 2);
+  EXPECT_EQ(num(r, "materials"), 2);
+  EXPECT_EQ(num(r, "colours"), 2);
+  // Primitive k: material k, grid k's triangles, the palette colour (linear).
+  float c[4];
+  mesh_grid_colour(A.view(), 0, c);
+  int mat = -1, tris = -1;
+  double rgba[4];
+  ASSERT_EQ(std::sscanf(r["primitive0"].c_str(), "%d %d %lf %lf %lf %lf", &mat, &tris, &rgba[0],
+                        &rgba[1], &rgba[2], &rgba[3]),
+            6);
+  EXPECT_EQ(mat, 0);
+  EXPECT_EQ(tris, 2 * N * 4);
+  EXPECT_NEAR(rgba[0], std::pow((c[0] + 0.055) / 1.055, 2.4), 1e-6);  // 0x3f / 255 > 0.04045
+  EXPECT_EQ(rgba[3], 1);
+  ASSERT_EQ(std::sscanf(r["primitive1"].c_str(), "%d %d", &mat, &tris), 2);
+  EXPECT_EQ(mat, 1);
+  EXPECT_EQ(tris, 2 * N * 3);
+  const auto p = round_trip(MeshFormat::ply, {A.view(), B.view()}, MeshWriteOptions(), s, "colours");
+  EXPECT_EQ(num(p, "vertex_colours"), 2);
+  // The palette repeats after kMeshPaletteSize grids; an explicit colour wins.
+  float d[4];
+  mesh_grid_colour(A.view(), kMeshPaletteSize, d);
+  EXPECT_TRUE(c[0] == d[0] && c[1] == d[1] && c[2] == d[2] && c[3] == d[3]);
+  GridMesh a = A.view(), b = B.view();
+  const float orange[4] = {1, 0.5f, 0, 1};
+  for (int k = 0; k < 4; ++k) a.rgba[k] = b.rgba[k] = orange[k];
+  mesh_grid_colour(b, 1, d);
+  EXPECT_EQ(d[1], 0.5f);
+  // One colour: one material and one primitive.
+  r = round_trip(MeshFormat::glb, {a, b}, MeshWriteOptions(), s, "one_colour");
+  EXPECT_EQ(num(r, "primitives"), 1);
+  EXPECT_EQ(num(r, "materials"), 1);
+  // A translucent grid is blended (the reader checks alphaMode).
+  b.rgba[3] = 0.5f;
+  r = round_trip(MeshFormat::glb, {a, b}, MeshWriteOptions(), s, "translucent");
+  EXPECT_EQ(num(r, "colours"), 2);
+  // Three grids, the first and last of one colour: two materials, three
+  // primitives (runs of consecutive grids share one).
+  const Grid C = cylinder(3, N, 0, -1, 5, 1);
+  GridMesh g3 = C.view();
+  for (int k = 0; k < 4; ++k) g3.rgba[k] = orange[k];
+  r = round_trip(MeshFormat::glb, {a, B.view(), g3}, MeshWriteOptions(), s, "three_colours");
+  EXPECT_EQ(num(r, "primitives"), 3);
+  EXPECT_EQ(num(r, "materials"), 2);
+  EXPECT_EQ(num(r, "boundary_edges"), 2 * N);
+}
+
 namespace {
 
 RationalCurve line(Vec3d P, Vec3d d) {
@@ -495,6 +555,11 @@ TEST(MeshIo, Statuses) {
   std::string long_name(kMaxMeshNameLength + 1, 'x');
   on.name = long_name.c_str();
   EXPECT_EQ(write_mesh(f, MeshFormat::glb, &g, 1, on, nullptr), Status::invalid_argument);
+  for (const float bad_colour : {-0.1f, 1.5f, float(NAN)}) {
+    GridMesh gc = g;
+    gc.rgba[2] = bad_colour;
+    EXPECT_EQ(write_mesh(f, MeshFormat::glb, &gc, 1, o, nullptr), Status::invalid_argument);
+  }
   RationalBezierPatch p;
   p.deg_u = 1;
   p.deg_v = 1;

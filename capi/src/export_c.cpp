@@ -315,6 +315,12 @@ int cyc_mesh_write(cyc_context* ctx, const char* path, int format, const cyc_gri
       G[k].rows = g.rows;
       G[k].cols = g.cols;
       G[k].closed = g.closed != 0;
+      for (int c = 0; c < 4; ++c) {
+        if (!(g.rgba[c] >= 0 && g.rgba[c] <= 1))
+          return fail(CYC_E_INVALID_ARGUMENT, "%s: grids[%d].rgba[%d] = %g is outside [0, 1]", fn,
+                      k, c, double(g.rgba[c]));
+        G[k].rgba[c] = g.rgba[c];
+      }
     }
     MeshWriteOptions o;
     if (options) {

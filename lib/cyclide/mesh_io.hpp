@@ -32,29 +32,44 @@
 // finite: the sum of the adjacent quad normals, times the grid's sign, or
 // else the grid's largest quad normal, normalized.
 //
+// Colours. Each grid has a colour (GridMesh::rgba: sRGB red, green, blue
+// and alpha in [0, 1]; all four 0 picks kMeshPalette's entry grid index mod
+// kMeshPaletteSize), so the parts of a scene (a blend and the shapes it
+// joins) stay apart when welded into one mesh. glb: one material per
+// distinct colour and one primitive per run of consecutive grids of the
+// same colour, all primitives indexing the one shared vertex array (so
+// welding across grids of different colours is kept); PLY: per-vertex
+// uchar red green blue alpha, a welded vertex taking the colour of the
+// grid that owns it (the earlier one). OBJ and STL carry no colour.
+//
 // Formats (MeshFormat): obj (ASCII "v x y z", "vn", "f a//a b//b c//c",
-// 1-based, %.17g); ply (binary_little_endian 1.0: float x y z nx ny nz;
-// faces "property list uchar int vertex_indices"); stl (binary: 80-byte
-// header not starting with "solid", uint32 count, per triangle float32
-// unit facet normal + 3 vertices + uint16 0; not indexed); glb (glTF 2.0
-// binary: one buffer [POSITION float32 VEC3 | NORMAL float32 VEC3 | uint32
-// indices], bufferViews with targets 34962/34963, accessor min/max of the
-// float positions, one mesh with one primitive of mode 4, one node and a
-// scene; chunks and views 4-byte aligned, JSON padded with spaces, BIN
-// with zeros; asset.version "2.0", generator "cyclide"; optional name).
+// 1-based, %.17g); ply (binary_little_endian 1.0: float x y z nx ny nz,
+// uchar red green blue alpha; faces "property list uchar int
+// vertex_indices"); stl (binary: 80-byte header not starting with "solid",
+// uint32 count, per triangle float32 unit facet normal + 3 vertices +
+// uint16 0; not indexed); glb (glTF 2.0 binary: one buffer [POSITION
+// float32 VEC3 | NORMAL float32 VEC3 | uint32 indices], bufferViews with
+// targets 34962/34963, accessor min/max of the float positions, one mesh
+// whose primitives (mode 4) share POSITION and NORMAL and each index a
+// range of the index view, materials with pbrMetallicRoughness
+// baseColorFactor (linear: the sRGB colour decoded), doubleSided, alphaMode
+// BLEND when alpha < 1; one node and a scene; chunks and views 4-byte
+// aligned, JSON padded with spaces, BIN with zeros; asset.version "2.0",
+// generator "cyclide"; optional name).
 //
 // Statuses (nothing is written unless every input is valid): null_argument
 // (file, grids or a grid's points null), invalid_argument (count not in
-// 1..kMaxMeshGrids, rows < 2, cols < 2 (closed: < 3), stride < 3, a bad
-// tolerance or format, a name longer than kMaxMeshNameLength, a mesh too big
+// 1..kMaxMeshGrids, rows < 2, cols < 2 (closed: < 3), stride < 3, a colour
+// component outside [0, 1] or NaN, a bad tolerance or format, a name longer than kMaxMeshNameLength, a mesh too big
 // for the format's 32-bit counts, or no cell of a grid with nonzero area),
 // not_finite (a point is NaN or infinite), io_error (fwrite / fprintf
 // failed: the stream's content is then unspecified; the C library's errno
 // tells why). The writers fflush the stream at the end. Numbers are printed
 // with snprintf in the process's numeric locale ("C" expected).
 //
-// Memory: no heap allocation by this code (fixed per-grid tables, ~21 KB,
-// and a 4 KB output buffer on the stack); the caller owns the stream (its
+// Memory: no heap allocation by this code (fixed per-grid tables, ~100 KB,
+// and a 4 KB output buffer on the stack; the glb JSON is generated twice,
+// once to measure it); the caller owns the stream (its
 // stdio buffer is the C library's). Work:
 // O(points) per pass, 3 passes (bounds, count, write); matching a row is
 // O(cols) per candidate offset, usually exiting at the first point.
@@ -70,7 +85,7 @@ namespace cyclide {
 inline namespace v0 {
 
 // Most grids in one mesh.
-constexpr int kMaxMeshGrids = 1024;  // (per-grid tables: ~80 bytes of stack each)
+constexpr int kMaxMeshGrids = 1024;  // (per-grid tables: ~100 bytes of stack each)
 // Longest glb node / mesh name, bytes (before JSON escaping).
 constexpr int kMaxMeshNameLength = 256;
 
@@ -80,7 +95,19 @@ struct GridMesh {
   std::size_t stride = 3;           // in doubles, >= 3, for both arrays
   int rows = 0, cols = 0;
   bool closed = true;  // the cols direction wraps
+  // sRGB red, green, blue and alpha in [0, 1]; all 0: the palette colour
+  // of the grid's index (mesh_grid_colour).
+  float rgba[4] = {0, 0, 0, 0};
 };
+
+// The default colours, sRGB: blue #3f7fb8, orange #e08a3c, green #5aa55a,
+// red #c8505a, purple #8c6bbf, ochre #d2b43c, teal #46aab4, mauve #b4789b.
+constexpr int kMeshPaletteSize = 8;
+
+// The colour grid g written as the index-th grid gets (sRGB, alpha):
+// g.rgba, or the palette's entry index mod kMeshPaletteSize when all four
+// components are 0.
+void mesh_grid_colour(const GridMesh& g, int index, float rgba[4]) noexcept;
 
 enum class MeshFormat : int { obj = 0, ply = 1, stl = 2, glb = 3 };
 

@@ -86,24 +86,28 @@ class Out {
   bool failed_ = false;
 };
 
-// A fixed text buffer (the glb JSON chunk).
-struct TextBuf {
-  char* s;
-  std::size_t cap, n = 0;
+// The glb JSON chunk: it grows with the grids' colours, so it is generated
+// twice, once counting its length (out null; the chunk header comes first)
+// and once into the stream.
+struct Json {
+  Out* out = nullptr;
+  std::size_t n = 0;
   bool overflow = false;
 #if defined(__GNUC__)
   __attribute__((format(printf, 2, 3)))
 #endif
   void
   add(const char* fmt, ...) {
+    char piece[512];
     va_list ap;
     va_start(ap, fmt);
-    const int k = std::vsnprintf(s + n, cap - n, fmt, ap);
+    const int k = std::vsnprintf(piece, sizeof(piece), fmt, ap);
     va_end(ap);
-    if (k < 0 || static_cast<std::size_t>(k) >= cap - n) {
+    if (k < 0 || static_cast<std::size_t>(k) >= sizeof(piece)) {
       overflow = true;
       return;
     }
+    if (out) out->put(piece, static_cast<std::size_t>(k));
     n += static_cast<std::size_t>(k);
   }
   void add_string(const char* str) {  // a JSON string literal
@@ -153,6 +157,28 @@ bool normalize(const double* a, double* r) {
   return true;
 }
 
+// ---------------------------------------------------------------- colours
+
+// kMeshPaletteSize sRGB colours, bytes (mesh_io.hpp).
+constexpr unsigned char kPalette[kMeshPaletteSize][3] = {
+    {0x3f, 0x7f, 0xb8}, {0xe0, 0x8a, 0x3c}, {0x5a, 0xa5, 0x5a}, {0xc8, 0x50, 0x5a},
+    {0x8c, 0x6b, 0xbf}, {0xd2, 0xb4, 0x3c}, {0x46, 0xaa, 0xb4}, {0xb4, 0x78, 0x9b}};
+
+bool colour_valid(const GridMesh& g) {
+  for (const float c : g.rgba)
+    if (!(c >= 0 && c <= 1)) return false;
+  return true;
+}
+
+bool same_colour(const float* a, const float* b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && a[3] == b[3];
+}
+
+// glTF's baseColorFactor is linear: the sRGB transfer function undone.
+double linear_of_srgb(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 // ---------------------------------------------------------------- the mesh
 
 struct RowWeld {
@@ -167,6 +193,8 @@ struct GridInfo {
   std::size_t base = 0;               // index of the grid's first own vertex
   double sign = 1;                    // winding
   bool flip = false;                  // the given normals are written negated
+  int material = -1;                  // glb material (distinct colour); -1: no triangles
+  std::size_t first_triangle = 0;     // index of the grid's first triangle
   double fallback[3] = {0, 0, 1};     // unit normal of the largest cell, times sign
 };
 
@@ -177,6 +205,7 @@ class Mesh {
   double tol = 0;
   std::size_t vertices = 0, triangles = 0;
   int welded_rows = 0, collapsed_rows = 0;
+  int materials = 0;  // distinct colours of the grids with triangles
   double coordinate_sum = 0;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // float bounds of the vertices
   GridInfo info[kMaxMeshGrids];
@@ -194,7 +223,7 @@ class Mesh {
     for (int k = 0; k < n; ++k) {
       const GridMesh& G = g[k];
       if (!G.points) return Status::null_argument;
-      if (G.rows < 2 || G.cols < (G.closed ? 3 : 2) || G.stride < 3)
+      if (G.rows < 2 || G.cols < (G.closed ? 3 : 2) || G.stride < 3 || !colour_valid(G))
         return Status::invalid_argument;
       for (int i = 0; i < G.rows; ++i)
         for (int j = 0; j < G.cols; ++j) {
@@ -255,16 +284,20 @@ class Mesh {
         }
         break;
       }
-    // Triangles, bounds and the checksum.
+    // Triangles, materials, bounds and the checksum.
     triangles = 0;
-    for_each_triangle([this](std::size_t, std::size_t, std::size_t) { ++triangles; });
+    for (int k = 0; k < n; ++k) {
+      info[k].first_triangle = triangles;
+      for_each_triangle_of(k, [this](std::size_t, std::size_t, std::size_t) { ++triangles; });
+    }
     if (triangles == 0) return Status::invalid_argument;
+    assign_materials();
     for (int c = 0; c < 3; ++c) {
       lo[c] = HUGE_VAL;
       hi[c] = -HUGE_VAL;
     }
     coordinate_sum = 0;
-    for_each_vertex([this](const double* p, const double*) {
+    for_each_vertex([this](const double* p, const double*, int) {
       coordinate_sum += p[0] + p[1] + p[2];
       for (int c = 0; c < 3; ++c) {
         const double f = static_cast<double>(static_cast<float>(p[c]));
@@ -295,29 +328,38 @@ class Mesh {
     return I.base + c0 + std::size_t(G.rows - 2) * cols + (I.collapsed[1] ? 0 : std::size_t(j));
   }
 
-  // f(a, b, c) for every triangle, in the written order.
+  // f(a, b, c) for every triangle, in the written order (grid by grid).
   template <class F>
   void for_each_triangle(F&& f) const {
-    for (int k = 0; k < count; ++k) {
-      const GridMesh& G = grids[k];
-      const int jcells = G.closed ? G.cols : G.cols - 1;
-      for (int i = 0; i + 1 < G.rows; ++i)
-        for (int j = 0; j < jcells; ++j) {
-          const int j1 = j + 1 == G.cols ? 0 : j + 1;
-          const std::size_t a = index(k, i, j), b = index(k, i + 1, j), c = index(k, i, j1),
-                            d = index(k, i + 1, j1);
-          if (info[k].sign > 0) {
-            emit(f, a, b, d);
-            emit(f, a, d, c);
-          } else {
-            emit(f, a, d, b);
-            emit(f, a, c, d);
-          }
-        }
-    }
+    for (int k = 0; k < count; ++k) for_each_triangle_of(k, f);
   }
 
-  // f(point, unit normal) for every vertex, in index order.
+  template <class F>
+  void for_each_triangle_of(int k, F&& f) const {
+    const GridMesh& G = grids[k];
+    const int jcells = G.closed ? G.cols : G.cols - 1;
+    for (int i = 0; i + 1 < G.rows; ++i)
+      for (int j = 0; j < jcells; ++j) {
+        const int j1 = j + 1 == G.cols ? 0 : j + 1;
+        const std::size_t a = index(k, i, j), b = index(k, i + 1, j), c = index(k, i, j1),
+                          d = index(k, i + 1, j1);
+        if (info[k].sign > 0) {
+          emit(f, a, b, d);
+          emit(f, a, d, c);
+        } else {
+          emit(f, a, d, b);
+          emit(f, a, c, d);
+        }
+      }
+  }
+
+  // The number of triangles of grid k.
+  std::size_t triangles_of(int k) const {
+    const std::size_t end = k + 1 < count ? info[k + 1].first_triangle : triangles;
+    return end - info[k].first_triangle;
+  }
+
+  // f(point, unit normal, grid) for every vertex, in index order.
   template <class F>
   void for_each_vertex(F&& f) const {
     for (int k = 0; k < count; ++k) {
@@ -330,7 +372,7 @@ class Mesh {
         for (int j = 0; j < jn; ++j) {
           V3 nrm;
           normal(k, i, j, jn == 1, nrm);
-          f(pt(k, i, j), nrm);
+          f(pt(k, i, j), nrm, k);
         }
       }
     }
@@ -372,6 +414,24 @@ class Mesh {
   template <class F>
   static void emit(F& f, std::size_t a, std::size_t b, std::size_t c) {
     if (a != b && b != c && a != c) f(a, b, c);
+  }
+
+  // One material per distinct colour, in the order of first use, for the
+  // grids that have triangles (O(grids^2) comparisons, at most ~1e6).
+  void assign_materials() {
+    materials = 0;
+    for (int k = 0; k < count; ++k) {
+      info[k].material = -1;
+      if (triangles_of(k) == 0) continue;
+      float c[4], d[4];
+      mesh_grid_colour(grids[k], k, c);
+      for (int h = 0; h < k && info[k].material < 0; ++h) {
+        if (info[h].material < 0) continue;
+        mesh_grid_colour(grids[h], h, d);
+        if (same_colour(c, d)) info[k].material = info[h].material;
+      }
+      if (info[k].material < 0) info[k].material = materials++;
+    }
   }
 
   std::size_t own(int k, int end) const {
@@ -480,10 +540,10 @@ void write_obj(const Mesh& m, const char* name, Out& out) {
     out.text(name);  // validated: no line breaks
     out.text("\n");
   }
-  m.for_each_vertex([&out](const double* p, const double*) {
+  m.for_each_vertex([&out](const double* p, const double*, int) {
     out.printf("v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
   });
-  m.for_each_vertex([&out](const double*, const double* n) {
+  m.for_each_vertex([&out](const double*, const double* n, int) {
     out.printf("vn %.17g %.17g %.17g\n", n[0], n[1], n[2]);
   });
   m.for_each_triangle([&out](std::size_t a, std::size_t b, std::size_t c) {
@@ -497,12 +557,16 @@ void write_ply(const Mesh& m, Out& out) {
       "property float x\nproperty float y\nproperty float z\n",
       m.vertices);
   out.printf(
-      "property float nx\nproperty float ny\nproperty float nz\nelement face %zu\n"
+      "property float nx\nproperty float ny\nproperty float nz\nproperty uchar red\n"
+      "property uchar green\nproperty uchar blue\nproperty uchar alpha\nelement face %zu\n"
       "property list uchar int vertex_indices\nend_header\n",
       m.triangles);
-  m.for_each_vertex([&out](const double* p, const double* n) {
+  m.for_each_vertex([&m, &out](const double* p, const double* n, int k) {
     for (int c = 0; c < 3; ++c) out.f32(p[c]);
     for (int c = 0; c < 3; ++c) out.f32(n[c]);
+    float rgba[4];
+    mesh_grid_colour(m.grids[k], k, rgba);
+    for (const float c : rgba) out.u8(static_cast<unsigned>(std::lround(255.0 * c)));
   });
   m.for_each_triangle([&out](std::size_t a, std::size_t b, std::size_t c) {
     out.u8(3);
@@ -579,9 +643,46 @@ void write_stl(const Mesh& m, const char* name, Out& out) {
   });
 }
 
-bool write_glb(const Mesh& m, const char* name, Out& out) {
-  char jbuf[8192];
-  TextBuf J{jbuf, sizeof(jbuf)};
+// f(material, first triangle, triangles) for every glb primitive: a run of
+// consecutive grids of one material (grids without triangles are skipped).
+template <class F>
+void for_each_primitive(const Mesh& m, F&& f) {
+  int k = 0;
+  while (k < m.count) {
+    const int mat = m.info[k].material;
+    if (mat < 0) {
+      ++k;
+      continue;
+    }
+    const std::size_t first = m.info[k].first_triangle;
+    std::size_t tris = 0;
+    for (; k < m.count && (m.info[k].material == mat || m.info[k].material < 0); ++k)
+      tris += m.triangles_of(k);
+    f(mat, first, tris);
+  }
+}
+
+// The glTF materials: one per distinct colour, linear baseColorFactor.
+void glb_materials(const Mesh& m, Json& J) {
+  J.add("\"materials\":[");
+  int next = 0;
+  for (int k = 0; k < m.count; ++k) {
+    if (m.info[k].material != next) continue;  // a repeat, or no triangles
+    float c[4];
+    mesh_grid_colour(m.grids[k], k, c);
+    J.add(
+        "%s{\"pbrMetallicRoughness\":{\"baseColorFactor\":[%.9g,%.9g,%.9g,%.9g],"
+        "\"metallicFactor\":0.05,\"roughnessFactor\":0.5},\"doubleSided\":true%s}",
+        next ? "," : "", linear_of_srgb(c[0]), linear_of_srgb(c[1]), linear_of_srgb(c[2]),
+        double(c[3]), c[3] < 1 ? ",\"alphaMode\":\"BLEND\"" : "");
+    ++next;
+  }
+  J.add("],");
+}
+
+// The JSON chunk's text (without padding). Accessors: 0 POSITION, 1 NORMAL,
+// 2 + p the indices of primitive p (a range of the one index view).
+void glb_json(const Mesh& m, const char* name, Json& J) {
   const std::size_t V = m.vertices, T = m.triangles;
   const std::size_t vbytes = 12 * V, ibytes = 12 * T, bin = 2 * vbytes + ibytes;
   J.add("{\"asset\":{\"version\":\"2.0\",\"generator\":\"cyclide\"},\"scene\":0,");
@@ -596,9 +697,17 @@ bool write_glb(const Mesh& m, const char* name, Out& out) {
     J.add_string(name);
     J.add(",");
   }
-  J.add(
-      "\"primitives\":[{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":2,"
-      "\"mode\":4}]}],");
+  J.add("\"primitives\":[");
+  int p = 0;
+  for_each_primitive(m, [&J, &p](int mat, std::size_t, std::size_t) {
+    J.add(
+        "%s{\"attributes\":{\"POSITION\":0,\"NORMAL\":1},\"indices\":%d,\"material\":%d,"
+        "\"mode\":4}",
+        p ? "," : "", 2 + p, mat);
+    ++p;
+  });
+  J.add("]}],");
+  glb_materials(m, J);
   J.add("\"buffers\":[{\"byteLength\":%zu}],", bin);
   J.add(
       "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":%zu,\"target\":34962},"
@@ -609,12 +718,22 @@ bool write_glb(const Mesh& m, const char* name, Out& out) {
       "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC3\","
       "\"min\":[%.9g,%.9g,%.9g],\"max\":[%.9g,%.9g,%.9g]},",
       V, m.lo[0], m.lo[1], m.lo[2], m.hi[0], m.hi[1], m.hi[2]);
-  J.add(
-      "{\"bufferView\":1,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC3\"},"
-      "{\"bufferView\":2,\"componentType\":5125,\"count\":%zu,\"type\":\"SCALAR\"}]}",
-      V, 3 * T);
-  if (J.overflow) return false;
-  const std::size_t jlen = (J.n + 3) & ~std::size_t(3);
+  J.add("{\"bufferView\":1,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC3\"}", V);
+  for_each_primitive(m, [&J](int, std::size_t first, std::size_t tris) {
+    J.add(
+        ",{\"bufferView\":2,\"byteOffset\":%zu,\"componentType\":5125,\"count\":%zu,"
+        "\"type\":\"SCALAR\"}",
+        12 * first, 3 * tris);
+  });
+  J.add("]}");
+}
+
+bool write_glb(const Mesh& m, const char* name, Out& out) {
+  Json measure;
+  glb_json(m, name, measure);
+  if (measure.overflow) return false;
+  const std::size_t jlen = (measure.n + 3) & ~std::size_t(3);
+  const std::size_t bin = 24 * m.vertices + 12 * m.triangles;
   const std::size_t total = 12 + 8 + jlen + 8 + bin;  // bin is a multiple of 4
   if (total > 0xffffffffu) return false;
   out.u32(0x46546C67u);  // "glTF"
@@ -622,14 +741,16 @@ bool write_glb(const Mesh& m, const char* name, Out& out) {
   out.u32(std::uint32_t(total));
   out.u32(std::uint32_t(jlen));
   out.u32(0x4E4F534Au);  // "JSON"
-  out.put(jbuf, J.n);
+  Json J;
+  J.out = &out;
+  glb_json(m, name, J);
   for (std::size_t k = J.n; k < jlen; ++k) out.u8(' ');
   out.u32(std::uint32_t(bin));
   out.u32(0x004E4942u);  // "BIN\0"
-  m.for_each_vertex([&out](const double* p, const double*) {
+  m.for_each_vertex([&out](const double* p, const double*, int) {
     for (int c = 0; c < 3; ++c) out.f32(p[c]);
   });
-  m.for_each_vertex([&out](const double*, const double* n) {
+  m.for_each_vertex([&out](const double*, const double* n, int) {
     for (int c = 0; c < 3; ++c) out.f32(n[c]);
   });
   m.for_each_triangle([&out](std::size_t a, std::size_t b, std::size_t c) {
@@ -648,6 +769,16 @@ bool name_ok(const char* name) {
 }
 
 }  // namespace
+
+void mesh_grid_colour(const GridMesh& g, int index, float rgba[4]) noexcept {
+  if (g.rgba[0] != 0 || g.rgba[1] != 0 || g.rgba[2] != 0 || g.rgba[3] != 0) {
+    for (int c = 0; c < 4; ++c) rgba[c] = g.rgba[c];
+    return;
+  }
+  const int k = ((index % kMeshPaletteSize) + kMeshPaletteSize) % kMeshPaletteSize;
+  for (int c = 0; c < 3; ++c) rgba[c] = float(kPalette[k][c]) / 255.0f;
+  rgba[3] = 1;
+}
 
 Status mesh_stats(const GridMesh* grids, int count, const MeshWriteOptions& options,
                   MeshStats& stats) noexcept {
@@ -671,9 +802,10 @@ Status write_mesh(std::FILE* f, MeshFormat fmt, const GridMesh* grids, int count
   const Status st = m.build(grids, count, options);
   if (st != Status::ok) return st;
   const std::size_t V = m.vertices, T = m.triangles;
-  // The formats' 32-bit counts (PLY indices are int32; glb: total length).
+  // The formats' 32-bit counts (PLY indices are int32; glb: total length,
+  // with room for the JSON: < 1 MiB even for kMaxMeshGrids colours).
   if (T > 0xffffffffu / 3 || (fmt == MeshFormat::ply && V > 0x7fffffffu) ||
-      (fmt == MeshFormat::glb && 24 * V + 12 * T > 0xffffffffu - 16384))
+      (fmt == MeshFormat::glb && 24 * V + 12 * T > 0xffffffffu - (1u << 20)))
     return Status::invalid_argument;
   Out out(f);
   switch (fmt) {

@@ -12,6 +12,10 @@ structure and prints "key value" lines:
   nonmanifold_edges (used by more than two), misoriented_edges (used twice
   in the same direction), normal_error (largest | |n| - 1 |), volume (signed,
   by the divergence theorem: positive when closed and wound outward).
+Colours: glb: primitives, materials, colours (distinct baseColorFactors
+  used), and per primitive k "primitiveK material triangles r g b a" (the
+  linear baseColorFactor); every primitive shares POSITION and NORMAL.
+  PLY: vertex_colours (distinct red green blue alpha bytes), when present.
 For json: patches, control_points, and for the k-th triple PATCH S T
 "pointk x y z", the point of that patch at local (S, T) by de Casteljau on
 the homogeneous control points (w, w x, w y, w z).
@@ -117,16 +121,24 @@ def read_ply(data, out):
             nf = int(p[2])
         elif p[0] == "property":
             props.append(" ".join(p[1:]))
-    check(props == ["float x", "float y", "float z", "float nx", "float ny", "float nz",
-                    "list uchar int vertex_indices"], "unexpected properties %r" % props)
+    base = ["float x", "float y", "float z", "float nx", "float ny", "float nz"]
+    rgba = ["uchar red", "uchar green", "uchar blue", "uchar alpha"]
+    face = ["list uchar int vertex_indices"]
+    check(props in (base + face, base + rgba + face), "unexpected properties %r" % props)
+    coloured = props == base + rgba + face
+    vsize = 28 if coloured else 24
     pos = end + len(b"end_header\n")
-    check(len(data) == pos + 24 * nv + 13 * nf, "file size does not match the counts")
-    verts, normals, tris = [], [], []
+    check(len(data) == pos + vsize * nv + 13 * nf, "file size does not match the counts")
+    verts, normals, tris, colours = [], [], [], set()
     for k in range(nv):
-        f = struct.unpack_from("<6f", data, pos + 24 * k)
+        f = struct.unpack_from("<6f", data, pos + vsize * k)
         verts.append(f[:3])
         normals.append(f[3:])
-    pos += 24 * nv
+        if coloured:
+            colours.add(struct.unpack_from("<4B", data, pos + vsize * k + 24))
+    if coloured:
+        out["vertex_colours"] = len(colours)
+    pos += vsize * nv
     for k in range(nf):
         n, a, b, c = struct.unpack_from("<Biii", data, pos + 13 * k)
         check(n == 3, "face with %d vertices" % n)
@@ -192,8 +204,12 @@ def read_glb(data, out):
     check(len(doc["buffers"]) == 1 and "uri" not in doc["buffers"][0], "one GLB buffer")
     blength = doc["buffers"][0]["byteLength"]
     check(blength <= blen and blen - blength < 4, "buffer byteLength vs BIN chunk")
-    prim = doc["meshes"][0]["primitives"][0]
-    check(prim.get("mode", 4) == 4, "mode is not triangles")
+    prims = doc["meshes"][0]["primitives"]
+    check(len(prims) >= 1, "no primitive")
+    prim = prims[0]
+    for p in prims:
+        check(p.get("mode", 4) == 4, "mode is not triangles")
+        check(p["attributes"] == prim["attributes"], "primitives do not share their vertices")
     check(doc["nodes"][doc["scenes"][doc["scene"]]["nodes"][0]]["mesh"] == 0, "node -> mesh")
 
     def accessor(k, ctype, atype, target):
@@ -215,8 +231,25 @@ def read_glb(data, out):
 
     pacc, verts = accessor(prim["attributes"]["POSITION"], 5126, "VEC3", 34962)
     nacc, normals = accessor(prim["attributes"]["NORMAL"], 5126, "VEC3", 34962)
-    iacc, idx = accessor(prim["indices"], 5125, "SCALAR", 34963)
-    check(len(idx) % 3 == 0, "index count not a multiple of 3")
+    idx = []
+    materials = doc.get("materials", [])
+    used = set()
+    for k, p in enumerate(prims):
+        _, part = accessor(p["indices"], 5125, "SCALAR", 34963)
+        check(len(part) % 3 == 0, "index count not a multiple of 3")
+        idx += part
+        if "material" in p:
+            mat = materials[p["material"]]
+            rgba = mat["pbrMetallicRoughness"]["baseColorFactor"]
+            check(len(rgba) == 4 and all(0 <= c <= 1 for c in rgba), "baseColorFactor")
+            check(mat.get("alphaMode", "OPAQUE") == ("OPAQUE" if rgba[3] == 1 else "BLEND"),
+                  "alphaMode")
+            used.add(tuple(rgba))
+            out["primitive%d" % k] = "%d %d %s" % (p["material"], len(part) // 3,
+                                                   " ".join(repr(c) for c in rgba))
+    out["primitives"] = len(prims)
+    out["materials"] = len(materials)
+    out["colours"] = len(used)
     lo = [min(v[c] for v in verts) for c in range(3)]
     hi = [max(v[c] for v in verts) for c in range(3)]
     check([f32(x) for x in pacc["min"]] == lo, "POSITION min %r != %r" % (pacc["min"], lo))

@@ -2048,13 +2048,18 @@ CYC_API double cyc_export_v_of_tau(double tau);
 
 /** A grid of rows x cols points (point (i, j) at points + (i cols + j)
  *  stride), normals optional (same indexing; may be NULL), closed: the cols
- *  direction wraps (as cyc_tessellate_eval writes it). */
+ *  direction wraps (as cyc_tessellate_eval writes it). rgba: the grid's
+ *  colour (sRGB red, green, blue and alpha, each in [0, 1]), written to glb
+ *  (a material per colour) and PLY (vertex colours); all four 0 (as a
+ *  zero-initialized struct has them): a palette colour chosen by the grid's
+ *  index in the call, so the parts of a scene differ. */
 typedef struct cyc_grid_mesh {
   const double* points;
   const double* normals;
   size_t stride; /* doubles, >= 3, for both arrays */
   int rows, cols;
   int closed;
+  float rgba[4]; /* sRGB + alpha in [0, 1]; {0, 0, 0, 0}: the palette */
 } cyc_grid_mesh;
 
 /** File formats of cyc_mesh_write. */
@@ -2062,7 +2067,8 @@ enum cyc_mesh_format {
   CYC_MESH_OBJ = 0, /* ASCII, v / vn / f, %.17g */
   CYC_MESH_PLY = 1, /* binary little-endian, float32 positions and normals */
   CYC_MESH_STL = 2, /* binary, float32 */
-  CYC_MESH_GLB = 3  /* glTF 2.0 binary: POSITION, NORMAL, uint32 indices */
+  CYC_MESH_GLB = 3  /* glTF 2.0 binary: POSITION, NORMAL, uint32 indices, a
+                      primitive and material per colour */
 };
 
 /** Options of cyc_mesh_write (NULL: the defaults). */
@@ -2088,8 +2094,8 @@ typedef struct cyc_mesh_stats {
  *  are watertight. The file is written to path + ".part" and renamed on
  *  success: on any error path is untouched (and no .part file remains).
  *  CYC_E_NULL_ARGUMENT, CYC_E_INVALID_ARGUMENT (count outside 1..1024, bad
- *  grid sizes or stride, unknown format, a name longer than 256 bytes, a
- *  degenerate grid), CYC_E_NOT_FINITE (a point), CYC_E_IO (the file could
+ *  grid sizes or stride, a colour component outside [0, 1], unknown format,
+ *  a name longer than 256 bytes, a degenerate grid), CYC_E_NOT_FINITE (a point), CYC_E_IO (the file could
  *  not be written). stats may be NULL. Allocates nothing but the C
  *  library's FILE. */
 CYC_API int cyc_mesh_write(cyc_context* ctx, const char* path, int format,
