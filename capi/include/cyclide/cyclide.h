@@ -1436,6 +1436,56 @@ CYC_API int cyc_sphere_skin_twist(cyc_context* ctx, const cyc_sphere_skin* skin,
 CYC_API int cyc_sphere_skin_lambda(cyc_context* ctx, const cyc_sphere_skin* skin, int patch,
                                    double theta, double t, double* lambda, double a[2]);
 
+/* Adaptive tessellation of a skin patch (SPEC.md §8j.2a), with the
+ * tessellation options, plan and buffers of the export block below (the
+ * struct tags are declared here). */
+struct cyc_tessellation_options;
+struct cyc_tessellation_plan;
+/** Bytes of workspace cyc_sphere_skin_tessellate_plan needs when N may reach
+ *  `segments` (0 if out of range): 452 doubles per segment. */
+CYC_API size_t cyc_sphere_skin_tessellation_workspace_size(int segments);
+/** Plans the mesh of patch `patch`: rows t = const (ts[0] = 0 < ... <
+ *  ts[plan->rows - 1] = 1) of N points at equal steps in theta, theta =
+ *  phase(t) + 2 pi j / N, phase linear in t from plan->phase0 to phase1 (0:
+ *  the seam on theta = 0; options->reference_u0 / _u1: world vectors whose
+ *  projections into the end circle's plane give the angle 0 at t = 0 / 1).
+ *  N starts from the largest lambda (plan->max_radius: max_radius (1 -
+ *  cos(pi/N)) <= tol/2) and is raised until every planned row's section
+ *  lies within tol/2 of its chords at the 1/4, 1/2, 3/4 points; an interval
+ *  is halved while its rows at 1/4, 1/2, 3/4 stray more than tol/2 from the
+ *  chords between its end rows (at 4N angles) or more than tol along the
+ *  cells' diagonals. plan->depth_limited: bit 1 an interval reached the
+ *  halving limit, bit 2 N reached max_segments (or fixed_segments) with a
+ *  row above tol/2. work: cyc_sphere_skin_tessellation_workspace_size(
+ *  fixed_segments or max_segments) bytes, 8-byte aligned. A chain welds
+ *  watertight when all its patches are planned with the same N
+ *  (fixed_segments = the largest plan->segments of a first pass) and the
+ *  same phase at the shared circles (the defaults do). Statuses:
+ *  CYC_E_NULL_ARGUMENT, CYC_E_INVALID_ARGUMENT (patch, options as
+ *  cyc_tessellate_plan's, row_cap < 2, a reference along the spine's
+ *  tangent), CYC_E_NOT_FINITE, CYC_E_BUFFER_TOO_SMALL (work, or more than
+ *  row_cap rows needed: the planner stops there), CYC_E_NUMERICAL_OVERFLOW.
+ *  *plan is written only on CYC_OK (ts[0 .. row_cap) may be overwritten
+ *  on errors of the planning itself). Allocation-free. */
+CYC_API int cyc_sphere_skin_tessellate_plan(cyc_context* ctx, const cyc_sphere_skin* skin,
+                                            int patch,
+                                            const struct cyc_tessellation_options* options,
+                                            double* ts, int row_cap, void* work,
+                                            size_t work_bytes, struct cyc_tessellation_plan* plan);
+/** The mesh of a plan: point (i, j) = s(phase(ts[i]) + 2 pi j / segments,
+ *  ts[i]) at index i * segments + j of points and normals (either may have
+ *  data = NULL; capacity >= rows * segments; closed in j), the values of
+ *  cyc_sphere_skin_eval_grid. Normals at singular points are (0, 0, 0) and
+ *  counted in *singular (may be NULL). Statuses: CYC_E_NULL_ARGUMENT,
+ *  CYC_E_INVALID_ARGUMENT (patch, plan, stride), CYC_E_NOT_FINITE,
+ *  CYC_E_BAD_DOMAIN (ts[i] outside [0, 1]), CYC_E_BUFFER_TOO_SMALL,
+ *  CYC_E_NUMERICAL_OVERFLOW; every argument is validated before anything is
+ *  written. Allocation-free. */
+CYC_API int cyc_sphere_skin_tessellate_eval(cyc_context* ctx, const cyc_sphere_skin* skin,
+                                            int patch, const struct cyc_tessellation_plan* plan,
+                                            const double* ts, cyc_buffer3 points,
+                                            cyc_buffer3 normals, size_t* singular);
+
 /** Seed 002 Remark 2 (optimizer tier): tangent lengths that make a skin
  *  valid (kappa r < 1 at both ends, ERRATA: a c > 0). */
 typedef struct cyc_skin_tangent_options {
