@@ -4,7 +4,8 @@
 // model of gallery.json. A page fails on any console error, uncaught page
 // error, failed request or HTTP error; the index must show one card per
 // model with its residual lines and a non-blank PNG; each viewer must report
-// its glb loaded (window.cyclideLoaded without error, triangles > 0), draw
+// its glb loaded (window.cyclideLoaded without error, triangles > 0, and
+// as many distinct part colours as the model's "colours" says), draw
 // a non-blank canvas, and move its camera on a mouse drag (OrbitControls)
 // and still draw the model. Screenshots go to OUT_DIR/screenshots/.
 // Usage: node tests/browser/browser_test.mjs OUT_DIR
@@ -110,6 +111,9 @@ try {
       const loaded = await page.evaluate(() => window.cyclideLoaded);
       if (loaded.error) problems.push(`${m.name}: ${loaded.error}`);
       else if (!(loaded.triangles > 0)) problems.push(`${m.name}: no triangles`);
+      else if (m.colours !== undefined && loaded.colours !== m.colours) {
+        problems.push(`${m.name}: ${loaded.colours} colours drawn, gallery.json says ${m.colours}`);
+      }
       const before = await page.evaluate(() => window.cyclideCanvasStats());
       if (before.nonBackground === 0) problems.push(`${m.name}: blank canvas`);
       await page.screenshot({ path: path.join(shots, `viewer-${m.name}.png`) });

@@ -3,8 +3,10 @@
 testing the web gallery without the C++ demo:
 
     DIR/gallery.json            the contract the demo writes (see web/README.md)
-    DIR/models/torus.glb        glTF 2.0 binary: POSITION, NORMAL, uint32 indices
-    DIR/models/sphere.glb       the same for a UV sphere
+    DIR/models/torus.glb        glTF 2.0 binary: POSITION, NORMAL, uint32 indices;
+                                two primitives (halves) with two materials sharing
+                                the vertices, as cyclide's writer colours its grids
+    DIR/models/sphere.glb       a UV sphere, one primitive without a material
 
 Usage: make_fixture.py DIR [--broken NAME]
   --broken NAME  overwrite models/NAME.glb with bytes that are not a glb
@@ -56,8 +58,10 @@ def pad4(b, fill):
     return b + fill * ((-len(b)) % 4)
 
 
-def glb(pos, nrm, idx):
-    """One mesh, one primitive (mode 4 = triangles), no material."""
+def glb(pos, nrm, idx, colours=()):
+    """One mesh; no colours: one primitive (mode 4 = triangles) without a
+    material; else one primitive per colour (linear RGBA), each indexing an
+    equal share of the triangles, all sharing POSITION and NORMAL."""
     pbin = b"".join(struct.pack("<3f", *p) for p in pos)
     nbin = b"".join(struct.pack("<3f", *n) for n in nrm)
     ibin = struct.pack("<%dI" % len(idx), *idx)
@@ -73,22 +77,32 @@ def glb(pos, nrm, idx):
     f32 = [struct.unpack("<3f", struct.pack("<3f", *p)) for p in pos]
     mn = [min(p[k] for p in f32) for k in range(3)]
     mx = [max(p[k] for p in f32) for k in range(3)]
+    accessors = [
+        {"bufferView": 0, "componentType": 5126, "count": len(pos), "type": "VEC3",
+         "min": mn, "max": mx},
+        {"bufferView": 1, "componentType": 5126, "count": len(nrm), "type": "VEC3"},
+    ]
+    prims, tris = [], len(idx) // 3
+    for k in range(max(1, len(colours))):
+        t0, t1 = tris * k // max(1, len(colours)), tris * (k + 1) // max(1, len(colours))
+        accessors.append({"bufferView": 2, "byteOffset": 12 * t0, "componentType": 5125,
+                          "count": 3 * (t1 - t0), "type": "SCALAR"})
+        prims.append({"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2 + k, "mode": 4})
+        if colours:
+            prims[-1]["material"] = k
     doc = {
         "asset": {"version": "2.0", "generator": "cyclide tests/browser/make_fixture.py"},
         "scene": 0,
         "scenes": [{"nodes": [0]}],
         "nodes": [{"mesh": 0}],
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1},
-                                    "indices": 2, "mode": 4}]}],
+        "meshes": [{"primitives": prims}],
         "buffers": [{"byteLength": len(blob)}],
         "bufferViews": views,
-        "accessors": [
-            {"bufferView": 0, "componentType": 5126, "count": len(pos), "type": "VEC3",
-             "min": mn, "max": mx},
-            {"bufferView": 1, "componentType": 5126, "count": len(nrm), "type": "VEC3"},
-            {"bufferView": 2, "componentType": 5125, "count": len(idx), "type": "SCALAR"},
-        ],
+        "accessors": accessors,
     }
+    if colours:
+        doc["materials"] = [{"pbrMetallicRoughness": {"baseColorFactor": list(c)},
+                             "doubleSided": True} for c in colours]
     js = pad4(json.dumps(doc, separators=(",", ":")).encode(), b" ")
     total = 12 + 8 + len(js) + 8 + len(blob)
     return (struct.pack("<4sII", b"glTF", 2, total)
@@ -107,9 +121,10 @@ def main(argv):
         sys.exit(__doc__)
     out = Path(args[0])
     (out / "models").mkdir(parents=True, exist_ok=True)
-    shapes = {"torus": torus(), "sphere": sphere()}
-    for name, (p, n, i) in shapes.items():
-        (out / "models" / (name + ".glb")).write_bytes(glb(p, n, i))
+    two = ((0.05, 0.21, 0.48, 1.0), (0.75, 0.25, 0.05, 1.0))  # blue, orange (linear)
+    shapes = {"torus": (torus(), two), "sphere": (sphere(), ())}
+    for name, ((p, n, i), colours) in shapes.items():
+        (out / "models" / (name + ".glb")).write_bytes(glb(p, n, i, colours))
     (out / "models" / "torus.obj").write_text("# fixture extra file\n")
     gallery = {
         "title": "cyclide gallery (test fixture)",
@@ -119,10 +134,11 @@ def main(argv):
              "section": "fixture (a Dupin cyclide)", "glb": "models/torus.glb",
              "residuals": ["implicit residual max |F(p)| = 0 (exact)",
                            "circle families: 2, max defect 0 <x & \"escaped\">"],
-             "extra": ["models/torus.obj"], "up": "z"},
+             "extra": ["models/torus.obj"], "up": "z", "colours": 2},
             {"name": "sphere", "title": "Unit sphere", "seed": "000",
              "section": "fixture", "glb": "models/sphere.glb",
-             "residuals": ["|p|^2 - 1 = 0 at all vertices (float32 rounding only)"]},
+             "residuals": ["|p|^2 - 1 = 0 at all vertices (float32 rounding only)"],
+             "colours": 1},
         ],
     }
     if broken:

@@ -3,8 +3,13 @@
 // it, frames the camera on it (see frame) and lets OrbitControls move it.
 // `&shot` (used by scripts/gallery to render the PNGs) shows the canvas only.
 //
+// Colours: each part keeps its glTF material's base colour (cyclide writes
+// one material per grid colour: a blend and the shapes it joins differ) or
+// its COLOR_0 vertex colours; a primitive without a material is SURFACE.
+//
 // For the renderer and the browser test it sets
-//   window.cyclideLoaded = {name, triangles, vertices, bbox: {min, max}}
+//   window.cyclideLoaded = {name, triangles, vertices, colours, bbox: {min, max}}
+// (colours: the distinct colours of the drawn parts)
 // after the first frame, or {name, error} (also logged with console.error),
 // window.cyclideCanvasStats() -> {width, height, nonBackground} counts the
 // canvas pixels that differ from the background colour, and
@@ -57,10 +62,13 @@ function frame(object, box, up) {
   const X = new THREE.Vector3(), Y = new THREE.Vector3(), Z = new THREE.Vector3();
   camera.matrixWorld.extractBasis(X, Y, Z);
   const points = [];
+  const seen = new Set(); // the parts (primitives) of one mesh share its vertices
   object.updateMatrixWorld(true);
   object.traverse((o) => {
     if (!o.isMesh) return;
     const pos = o.geometry.getAttribute('position');
+    if (seen.has(pos.array)) return;
+    seen.add(pos.array);
     const step = Math.max(1, Math.floor(pos.count / 50000)); // enough to frame
     for (let i = 0; i < pos.count; i += step) {
       points.push(new THREE.Vector3().fromBufferAttribute(pos, i).applyMatrix4(o.matrixWorld).sub(center));
@@ -127,21 +135,32 @@ async function main() {
     throw new Error(`${m.glb} is not a valid glTF binary: ${e && e.message ? e.message : e}`);
   }
   let triangles = 0, vertices = 0;
+  const colours = new Set();
+  const counted = new Set(); // primitives share one geometry's vertices
   gltf.scene.traverse((o) => {
     if (!o.isMesh) return;
     const geo = o.geometry;
     if (!geo.getAttribute('normal')) geo.computeVertexNormals();
     const pos = geo.getAttribute('position');
-    vertices += pos.count;
+    if (!counted.has(pos.array)) {
+      counted.add(pos.array);
+      vertices += pos.count;
+    }
     triangles += (geo.index ? geo.index.count : pos.count) / 3;
-    // Open patches are seen from both sides; keep vertex colours if given.
+    // The file's material (not GLTFLoader's default for primitives without one).
+    const own = gltf.parser.associations.has(o.material) ? o.material : null;
+    const vertexColors = !!geo.getAttribute('color');
+    // Open patches are seen from both sides.
     const mat = new THREE.MeshStandardMaterial({
-      color: geo.getAttribute('color') ? 0xffffff : SURFACE,
-      vertexColors: !!geo.getAttribute('color'),
+      color: own ? own.color : vertexColors ? 0xffffff : SURFACE,
+      vertexColors,
+      opacity: own ? own.opacity : 1,
+      transparent: own ? own.transparent : false,
       side: THREE.DoubleSide,
       roughness: 0.5,
       metalness: 0.05,
     });
+    colours.add(vertexColors ? 'vertex colours' : mat.color.getHexString() + mat.opacity);
     materials.push(mat);
     o.material = mat;
   });
@@ -153,11 +172,13 @@ async function main() {
   render();
 
   document.getElementById('stats').textContent =
-    `${triangles} triangles, ${vertices} vertices; ` +
+    `${triangles} triangles, ${vertices} vertices, ${colours.size} ` +
+    `colour${colours.size === 1 ? '' : 's'}; ` +
     `box [${box.min.toArray().map((v) => v.toPrecision(4)).join(', ')}] \u2013 ` +
     `[${box.max.toArray().map((v) => v.toPrecision(4)).join(', ')}]`;
   window.cyclideLoaded = {
-    name, triangles, vertices, bbox: { min: box.min.toArray(), max: box.max.toArray() },
+    name, triangles, vertices, colours: colours.size,
+    bbox: { min: box.min.toArray(), max: box.max.toArray() },
   };
 }
 
