@@ -118,8 +118,55 @@ void tessellate(benchmark::State& state, bool with_mesh) {
 void BM_TessellatePlanBlend1e4(benchmark::State& state) { tessellate(state, false); }
 void BM_TessellateBlend1e4(benchmark::State& state) { tessellate(state, true); }
 
+// A sphere skin (seed 002, the skew skin of the tests: spheres of radii 1
+// and 1.2, a curved spine, the RMF pairing) planned and meshed to a chordal
+// tolerance of 1e-4 (SPEC.md §8j.2a).
+void BM_SkinTessellate(benchmark::State& state) {
+  cyc_context* ctx = nullptr;
+  cyc_context_create(nullptr, &ctx);
+  cyc_skin_end ends[2];
+  const double ax[3] = {1.0 / std::sqrt(2.0), 0.6 / std::sqrt(2.0), 0.8 / std::sqrt(2.0)};
+  const double m0[3] = {0, 0, 0}, p0[3] = {0.3, 0, 0}, t0[3] = {3, 0, 0};
+  const double m1[3] = {4, 1, 0.5};
+  const double p1[3] = {4 - 0.4 * ax[0], 1 - 0.4 * ax[1], 0.5 - 0.4 * ax[2]};
+  const double t1[3] = {3 * ax[0], 3 * ax[1], 3 * ax[2]};
+  cyc_sphere_skin* skin = nullptr;
+  if (cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &ends[0]) != CYC_OK ||
+      cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &ends[1]) != CYC_OK ||
+      cyc_sphere_skin_create(ctx, &ends[0], &ends[1], nullptr, &skin) != CYC_OK) {
+    state.SkipWithError(cyc_context_last_error(ctx));
+    cyc_context_destroy(ctx);
+    return;
+  }
+  cyc_tessellation_options o;
+  cyc_tessellation_options_default(&o);
+  o.chordal_tolerance = 1e-4;
+  std::vector<double> work(cyc_sphere_skin_tessellation_workspace_size(o.max_segments) /
+                           sizeof(double));
+  std::vector<double> ts(1 << 16), pts, nrm;
+  cyc_tessellation_plan plan{};
+  for (auto _ : state) {
+    if (cyc_sphere_skin_tessellate_plan(ctx, skin, 0, &o, ts.data(), int(ts.size()), work.data(),
+                                        work.size() * sizeof(double), &plan) != CYC_OK) {
+      state.SkipWithError(cyc_context_last_error(ctx));
+      break;
+    }
+    const size_t n = size_t(plan.rows) * plan.segments;
+    if (pts.size() < 3 * n) pts.resize(3 * n), nrm.resize(3 * n);
+    cyc_sphere_skin_tessellate_eval(ctx, skin, 0, &plan, ts.data(), cyc_buffer3{pts.data(), n, 3},
+                                    cyc_buffer3{nrm.data(), n, 3}, nullptr);
+    benchmark::DoNotOptimize(pts.data());
+  }
+  state.counters["rows"] = plan.rows;
+  state.counters["segments"] = plan.segments;
+  state.counters["triangles"] = 2.0 * (plan.rows - 1) * plan.segments;
+  cyc_sphere_skin_destroy(ctx, skin);
+  cyc_context_destroy(ctx);
+}
+
 }  // namespace
 
 BENCHMARK(BM_ExportBlendWholeCircles)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TessellatePlanBlend1e4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TessellateBlend1e4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SkinTessellate)->Unit(benchmark::kMillisecond);

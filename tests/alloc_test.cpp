@@ -807,6 +807,60 @@ TEST(AllocFreeSkin, EvalGridTwistLambdaInfo) {
   cyc_context_destroy(ctx);
 }
 
+// Issue 9: the tessellation of a skin chain's patches (plan with the
+// caller's scratch, mesh into the caller's buffers) and its errors allocate
+// nothing.
+TEST(AllocFreeSkin, Tessellation) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  cyc_skin_end ends[3];
+  const double m0[3] = {0, 0, 0}, p0[3] = {0.3, 0, 0}, t0[3] = {3, 0, 0};
+  const double m1[3] = {4, 1, 0.5}, p1[3] = {3.7, 1, 0.5}, t1[3] = {3, 0, 0};
+  const double m2[3] = {8, 2, 0}, p2[3] = {7.7, 2, 0}, t2[3] = {3, 0, 0};
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &ends[0]), CYC_OK);
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &ends[1]), CYC_OK);
+  ASSERT_EQ(cyc_skin_end_from_sphere(ctx, m2, 0.9, p2, t2, &ends[2]), CYC_OK);
+  cyc_sphere_skin* h = nullptr;
+  ASSERT_EQ(cyc_sphere_skin_chain_create(ctx, ends, 3, nullptr, &h, nullptr), CYC_OK)
+      << cyc_context_last_error(ctx);
+  cyc_tessellation_options o;
+  cyc_tessellation_options_default(&o);
+  o.chordal_tolerance = 1e-3;
+  std::vector<double> work(cyc_sphere_skin_tessellation_workspace_size(o.max_segments) /
+                           sizeof(double));
+  std::vector<double> ts(4096), pts(3 * 4096 * 256), nrm(3 * 4096 * 256);
+  cyc_tessellation_plan plan{};
+  size_t singular = 0;
+  int bad = 0;
+  const Heap heap = measure([&] {
+    for (int patch = 0; patch < 2; ++patch) {
+      bad += cyc_sphere_skin_tessellate_plan(ctx, h, patch, &o, ts.data(), 4096, work.data(),
+                                             work.size() * sizeof(double), &plan) != CYC_OK;
+      bad += cyc_sphere_skin_tessellate_eval(ctx, h, patch, &plan, ts.data(),
+                                             cyc_buffer3{pts.data(), 4096 * 256, 3},
+                                             cyc_buffer3{nrm.data(), 4096 * 256, 3},
+                                             &singular) != CYC_OK;
+    }
+    bad += cyc_sphere_skin_tessellate_plan(ctx, h, 2, &o, ts.data(), 4096, work.data(),
+                                           work.size() * sizeof(double),
+                                           &plan) != CYC_E_INVALID_ARGUMENT;
+    bad += cyc_sphere_skin_tessellate_plan(ctx, h, 0, &o, ts.data(), 2, work.data(),
+                                           work.size() * sizeof(double),
+                                           &plan) != CYC_E_BUFFER_TOO_SMALL;
+    bad += cyc_sphere_skin_tessellate_eval(ctx, h, 0, &plan, ts.data(),
+                                           cyc_buffer3{pts.data(), 1, 3},
+                                           cyc_buffer3{nullptr, 0, 3},
+                                           nullptr) != CYC_E_BUFFER_TOO_SMALL;
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(plan.rows, 2);
+  EXPECT_EQ(singular, 0u);
+  EXPECT_EQ(heap.allocations, 0);
+  EXPECT_EQ(heap.frees, 0);
+  cyc_sphere_skin_destroy(ctx, h);
+  cyc_context_destroy(ctx);
+}
+
 // Seed 003's Dupin cyclides: the core's dupin_eval and the C ABI's
 // cyc_dupin_eval, cyc_dupin_eval_grid (validation of the value included)
 // and their errors allocate nothing.

@@ -29,7 +29,9 @@
 // (the points theta_j + f h and theta_j+1 - f h of the row at fraction f
 // against the chords (ta, theta_j)-(tb, theta_j+1) and (ta, theta_j+1)-(tb,
 // theta_j): the mesh writer's triangles cut the cells along a diagonal; a
-// diagonal's error includes the theta share, hence the full tol). Depth
+// diagonal's error includes the theta share, hence tol / 2 + max(tol / 2,
+// the five rows' section deviation), so that a segment-limited N does not
+// drive the rows to the depth limit). Depth
 // limit kMaxTessellationDepth (plan.depth_limited). The halves reuse the
 // parent's rows, so each check evaluates two new rows.
 //
