@@ -190,6 +190,48 @@ TEST(SkinTessellate, ChordalToleranceInsideTriangles) {
     }
 }
 
+// Random skins (spheres of radii 0.3..1.5 at random places and circles,
+// tangents of the chord's length, all pairings): the tolerance holds inside
+// the triangles.
+TEST(SkinTessellate, RandomSkins) {
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  int tested = 0;
+  double worst = 0;
+  for (int trial = 0; trial < 60 && tested < 24; ++trial) {
+    const Vec3d m0(0, 0, 0), m1(3 + 2 * U(rng), 2 * U(rng), 2 * U(rng));
+    const double R0 = 0.9 + 0.6 * U(rng), R1 = 0.9 + 0.6 * U(rng);
+    Vec3d a0 = (m1 - m0).normalized() + 0.5 * Vec3d(U(rng), U(rng), U(rng));
+    Vec3d a1 = (m1 - m0).normalized() + 0.5 * Vec3d(U(rng), U(rng), U(rng));
+    a0.normalize();
+    a1.normalize();
+    const double L = (m1 - m0).norm();
+    SkinEnd e0, e1;
+    if (skin_end_from_sphere(m0, R0, m0 + 0.5 * R0 * U(rng) * a0, L * a0, e0) != Status::ok ||
+        skin_end_from_sphere(m1, R1, m1 - 0.5 * R1 * U(rng) * a1, L * a1, e1) != Status::ok)
+      continue;
+    SkinOptions so;
+    so.pairing = SkinPairing(trial % 3);
+    SphereSkin S;
+    if (make_sphere_skin(e0, e1, so, S) != Status::ok) continue;
+    ++tested;
+    const double tol = trial % 2 ? 1e-3 : 1e-2;
+    TessellationOptions o;
+    o.chordal_tolerance = tol;
+    const Mesh M = tessellate(S, o);
+    ASSERT_EQ(M.status, Status::ok) << trial;
+    EXPECT_FALSE(M.plan.depth_limited) << trial;
+    EXPECT_FALSE(M.report.segment_limited) << trial;
+    const Errors E = measure(S, M, 3000, unsigned(trial));
+    EXPECT_LE(E.plane, tol) << trial;
+    EXPECT_LE(E.parametric, tol) << trial;
+    EXPECT_LE(E.center, tol) << trial;
+    worst = std::max({worst, E.parametric / tol, E.plane / tol});
+  }
+  EXPECT_GE(tested, 12);
+  std::printf("%d random skins: worst error %.2f of tol\n", tested, worst);
+}
+
 // N and the rows grow as the tolerance shrinks.
 TEST(SkinTessellate, GrowsAsToleranceShrinks) {
   const SphereSkin S = skew_skin(SkinPairing::kunkli_hoffmann);
