@@ -87,18 +87,21 @@ static double* copy_doubles(const double* x, size_t n) {
 
 /* Keeps a mesh of ngrids grids of rows x cols points stored one after the
  * other in pts / nrm (nrm may be NULL). */
-static void keep_mesh(const char* name, const double* pts, const double* nrm, int ngrids,
-                      int rows, int cols, int closed) {
+static const demo_mesh* keep_mesh(const char* name, const double* pts, const double* nrm,
+                                  int ngrids, int rows, int cols, int closed) {
   demo_mesh* m;
   const size_t n = (size_t)ngrids * rows * cols * 3;
   int k;
-  if (g_nmeshes == MAX_MESHES) return;
+  if (g_nmeshes == MAX_MESHES) {
+    fprintf(stderr, "demo: more than %d meshes (raise MAX_MESHES)\n", MAX_MESHES);
+    exit(1);
+  }
   m = &g_meshes[g_nmeshes++];
   snprintf(m->name, sizeof m->name, "%s", name);
   m->pts = copy_doubles(pts, n);
   m->nrm = nrm ? copy_doubles(nrm, n) : NULL;
   m->ngrids = ngrids;
-  m->grids = (cyc_grid_mesh*)malloc(ngrids * sizeof *m->grids);
+  m->grids = (cyc_grid_mesh*)calloc(ngrids, sizeof *m->grids); /* rgba 0: the palette */
   if (!m->grids) exit(1);
   for (k = 0; k < ngrids; ++k) {
     const size_t off = (size_t)k * rows * cols * 3;
@@ -109,6 +112,23 @@ static void keep_mesh(const char* name, const double* pts, const double* nrm, in
     m->grids[k].cols = cols;
     m->grids[k].closed = closed;
   }
+  return m;
+}
+
+/* The kept mesh m as DIR/NAME.obj through cyc_mesh_write (welded where its
+ * grids share rows; the report's "wrote" line names the file). */
+static void write_obj(cyc_context* ctx, const char* dir, const demo_mesh* m, FILE* report) {
+  char path[1024];
+  cyc_mesh_write_options o;
+  o.weld_tolerance = -1;
+  o.name = m->name;
+  if (snprintf(path, sizeof path, "%s/%s.obj", dir, m->name) >= (int)sizeof path) {
+    fprintf(stderr, "demo: path too long\n");
+    exit(1);
+  }
+  check(ctx, cyc_mesh_write(ctx, path, CYC_MESH_OBJ, m->grids, m->ngrids, &o, NULL),
+        "cyc_mesh_write");
+  fprintf(report, "  wrote %s\n", path);
 }
 
 static const demo_mesh* find_mesh(const char* name) {
@@ -142,28 +162,11 @@ static void circle_parameters(cyc_context* ctx, const cyc_surface* s, double u, 
   }
 }
 
-/* An NU x NV mesh (closed in v) with normals as OBJ. */
-static void write_mesh(const char* dir, const char* name, const double* pts, const double* nrm,
-                       FILE* report) {
-  char file[256];
-  FILE* f;
-  int i, j;
-  snprintf(file, sizeof file, "%s.obj", name);
-  f = open_out(dir, file);
-  fprintf(f, "# cyclide demo: %s, %d circles x %d points\n", name, NU, NV);
-  for (i = 0; i < NU * NV; ++i)
-    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
-  for (i = 0; i < NU * NV; ++i)
-    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-  for (i = 0; i + 1 < NU; ++i)
-    for (j = 0; j < NV; ++j) {
-      const int a = i * NV + j + 1, b = i * NV + (j + 1) % NV + 1;
-      const int c = a + NV, d = b + NV;
-      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, d, d, c, c);
-    }
-  fclose(f);
-  fprintf(report, "  wrote %s/%s\n", dir, file);
-  keep_mesh(name, pts, nrm, 1, NU, NV, 1);
+/* A rows x cols grid with normals (closed: in the cols direction), kept for
+ * the gallery and written as OBJ. */
+static void write_mesh(cyc_context* ctx, const char* dir, const char* name, const double* pts,
+                       const double* nrm, int rows, int cols, int closed, FILE* report) {
+  write_obj(ctx, dir, keep_mesh(name, pts, nrm, 1, rows, cols, closed), report);
 }
 
 /* Mesh the surface (closed in v) and report the implicit residual. */
@@ -201,7 +204,7 @@ static void write_surface(cyc_context* ctx, const cyc_surface* s, const char* di
     fprintf(report, "  implicit equation residual on %d mesh points: %.2e (scale %.1f)\n",
             NU * NV, worst, scale * scale * scale);
   fprintf(report, "  points with undefined normal (singular, e.g. P2, P3): %zu\n", singular);
-  write_mesh(dir, name, pts, nrm, report);
+  write_mesh(ctx, dir, name, pts, nrm, NU, NV, 1, report);
 }
 
 /* Polylines of the input curves and of the spine (PRCS) or directrix. */
@@ -347,7 +350,7 @@ static void write_inverted(cyc_context* ctx, const cyc_surface* s, const cyc_inv
     if (v > worst) worst = v;
   }
   fprintf(report, "  inverted mesh: largest |F|/|grad F| on %d points: %.2e\n", NU * NV, worst);
-  write_mesh(dir, name, pts, nrm, report);
+  write_mesh(ctx, dir, name, pts, nrm, NU, NV, 1, report);
 }
 
 static void darboux_demos(cyc_context* ctx, const char* dir, FILE* report) {
@@ -471,8 +474,8 @@ static void report_join(cyc_context* ctx, const cyc_surface* in, double u, doubl
 }
 
 /* A UV sphere as OBJ (the obstacle). */
-static void write_sphere(const char* dir, const char* name, const double c[3], double r,
-                         FILE* report) {
+static void write_sphere(cyc_context* ctx, const char* dir, const char* name, const double c[3],
+                         double r, FILE* report) {
   static double pts[NU * NV * 3], nrm[NU * NV * 3];
   int i, j, k;
   for (i = 0; i < NU; ++i)
@@ -484,7 +487,7 @@ static void write_sphere(const char* dir, const char* name, const double c[3], d
         pts[3 * (i * NV + j) + k] = c[k] + r * n[k];
       }
     }
-  write_mesh(dir, name, pts, nrm, report);
+  write_mesh(ctx, dir, name, pts, nrm, NU, NV, 1, report);
 }
 
 /* The smallest distance of the blend's points from c (a 64 x 48 grid). */
@@ -602,7 +605,7 @@ static void blend_demos(cyc_context* ctx, const char* dir, FILE* report) {
     report_join(ctx, a, 1.0, so.lambda, opt, 0.0, 0, report);
     write_surface(ctx, plain, dir, "blend_ringed_k2_default", NULL, report);
     write_surface(ctx, opt, dir, "blend_ringed_k2_optimized", NULL, report);
-    write_sphere(dir, "blend_obstacle", ob.center, ob.radius, report);
+    write_sphere(ctx, dir, "blend_obstacle", ob.center, ob.radius, report);
     cyc_surface_destroy(ctx, plain);
     cyc_surface_destroy(ctx, opt);
   } else {
@@ -864,15 +867,16 @@ static double write_skin(cyc_context* ctx, const cyc_sphere_skin* skin, int patc
       for (k = 0; k < 3; ++k) d2 += (q[k] - ends[e].center[k]) * (q[k] - ends[e].center[k]);
       worst = fmax(worst, fabs(sqrt(d2) - ends[e].radius));
     }
-  write_mesh(dir, name, pts, nrm, report);
+  write_mesh(ctx, dir, name, pts, nrm, NU, NV, 1, report);
   if (singular) fprintf(report, "  %zu singular normals\n", singular);
   return worst;
 }
 
-static void skin_sphere(const cyc_skin_end* e, const char* dir, const char* name, FILE* report) {
+static void skin_sphere(cyc_context* ctx, const cyc_skin_end* e, const char* dir,
+                        const char* name, FILE* report) {
   double m[3], R;
   cyc_skin_end_sphere(e, m, &R);
-  write_sphere(dir, name, m, R, report);
+  write_sphere(ctx, dir, name, m, R, report);
 }
 
 static void skin_demos(cyc_context* ctx, const char* dir, FILE* report) {
@@ -895,8 +899,8 @@ static void skin_demos(cyc_context* ctx, const char* dir, FILE* report) {
   }
   check(ctx, cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &ends[0]), "skin end");
   check(ctx, cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &ends[1]), "skin end");
-  skin_sphere(&ends[0], dir, "skin_sphere0", report);
-  skin_sphere(&ends[1], dir, "skin_sphere1", report);
+  skin_sphere(ctx, &ends[0], dir, "skin_sphere0", report);
+  skin_sphere(ctx, &ends[1], dir, "skin_sphere1", report);
   for (pairing = 0; pairing < 3; ++pairing) {
     char name[64];
     double gap;
@@ -950,7 +954,7 @@ static void skin_demos(cyc_context* ctx, const char* dir, FILE* report) {
   for (k = 0; k < 5; ++k) {
     char name[64];
     snprintf(name, sizeof name, "skin_chain_sphere%d", k);
-    skin_sphere(&chain[k], dir, name, report);
+    skin_sphere(ctx, &chain[k], dir, name, report);
   }
   {
     /* G1 at the shared circles: the normals of both patches there. */
@@ -1147,29 +1151,6 @@ static void normal_of(double y1, double y2, double n[3]) {
   n[2] = (y1 * y1 + y2 * y2 - 1) / N;
 }
 
-/* An open nu x nv grid mesh with normals as OBJ. */
-static void write_grid(const char* dir, const char* name, const double* pts, const double* nrm,
-                       int nu, int nv, FILE* report) {
-  char file[256];
-  FILE* f;
-  int i, j;
-  snprintf(file, sizeof file, "%s.obj", name);
-  f = open_out(dir, file);
-  fprintf(f, "# cyclide demo: %s, %d x %d grid\n", name, nu, nv);
-  for (i = 0; i < nu * nv; ++i)
-    fprintf(f, "v %.9g %.9g %.9g\n", pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]);
-  for (i = 0; i < nu * nv; ++i)
-    fprintf(f, "vn %.6g %.6g %.6g\n", nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-  for (i = 0; i + 1 < nu; ++i)
-    for (j = 0; j + 1 < nv; ++j) {
-      const int a = i * nv + j + 1, b = a + 1, c = a + nv, d = c + 1;
-      fprintf(f, "f %d//%d %d//%d %d//%d %d//%d\n", a, a, b, b, d, d, c, c);
-    }
-  fclose(f);
-  fprintf(report, "  wrote %s/%s\n", dir, file);
-  keep_mesh(name, pts, nrm, 1, nu, nv, 0);
-}
-
 /* Bernstein coefficients of u^k in degree 3: C(i, k) / C(3, k). */
 static double bernstein_of_power(int i, int k) {
   static const double C[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
@@ -1216,7 +1197,7 @@ static void pn_demo(cyc_context* ctx, const char* dir, FILE* report) {
           "cyc_pn_surface_eval_grid");
     if (failed) fprintf(report, "  %zu grid points failed (developable or at infinity)\n", failed);
     if (o > 0) fprintf(report, "  the offset at d = %+g:\n", offsets[o]);
-    write_grid(dir, names[o], pts[o], nrm, PN_GRID, PN_GRID, report);
+    write_mesh(ctx, dir, names[o], pts[o], nrm, PN_GRID, PN_GRID, 0, report);
   }
   /* Certificates: unit normals orthogonal to the partials, each point on its
    * tangent plane, and the offsets at distance |d| along the normal. */
@@ -1348,14 +1329,19 @@ static double normal_check(cyc_context* ctx, const cyc_quadratic_graph_triangle*
   return norm3(m) / norm3(w);
 }
 
-/* Keeps the patchwork for the gallery: each cubic triangle as a
- * (TESS + 1) x (TESS + 1) grid over the collapsed square (s, t) ->
- * barycentrics (1 - s, s (1 - t), s t), whose first row is one point. */
-static void keep_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
-                           const cyc_rational_cubic_triangle* patches, int np, const char* name) {
+/* The patchwork, each cubic triangle evaluated once as a (TESS + 1) x
+ * (TESS + 1) grid over the collapsed square (s, t) -> barycentrics (1 - s,
+ * s (1 - t), s t), whose first row is one point (the writer makes it one
+ * vertex): kept for the gallery (one colour: 588 grids stay one glb
+ * primitive) and written as OBJ. */
+static void write_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
+                            const cyc_rational_cubic_triangle* patches, int np, const char* dir,
+                            const char* name, FILE* report) {
+  static const float kPatchwork[4] = {0.82f, 0.71f, 0.24f, 1}; /* ochre, sRGB */
   const int n = TESS + 1;
-  double *pts = (double*)malloc((size_t)np * n * n * 3 * sizeof(double)),
-         *nrm = (double*)malloc((size_t)np * n * n * 3 * sizeof(double));
+  double *pts = (double*)calloc((size_t)np * n * n * 3, sizeof(double)),
+         *nrm = (double*)calloc((size_t)np * n * n * 3, sizeof(double));
+  const demo_mesh* m;
   int k, i, j;
   if (!pts || !nrm) exit(1);
   for (k = 0; k < np; ++k)
@@ -1365,48 +1351,11 @@ static void keep_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle*
         const size_t at = 3 * (((size_t)k * n + i) * n + j);
         patch_point(ctx, iso + k, patches + k, 1 - S, S * (1 - T), S * T, pts + at, nrm + at);
       }
-  keep_mesh(name, pts, nrm, np, n, n, 0);
+  m = keep_mesh(name, pts, nrm, np, n, n, 0);
+  for (k = 0; k < np; ++k) memcpy(m->grids[k].rgba, kPatchwork, sizeof kPatchwork);
+  write_obj(ctx, dir, m, report);
   free(pts);
   free(nrm);
-}
-
-static void write_patchwork(cyc_context* ctx, const cyc_quadratic_graph_triangle* iso,
-                            const cyc_rational_cubic_triangle* patches, int np, const char* dir,
-                            const char* name, FILE* report) {
-  const int per = (TESS + 1) * (TESS + 2) / 2;
-  char file[256];
-  FILE* f;
-  int k, i, j, base;
-  snprintf(file, sizeof file, "%s.obj", name);
-  f = open_out(dir, file);
-  fprintf(f, "# cyclide demo: %s, %d rational cubic triangles on parabolic Dupin cyclides\n", name,
-          np);
-  for (k = 0; k < np; ++k)
-    for (i = 0; i <= TESS; ++i)
-      for (j = 0; i + j <= TESS; ++j) {
-        double x[3], nn[3];
-        patch_point(ctx, iso + k, patches + k, 1 - (double)(i + j) / TESS, (double)i / TESS,
-                    (double)j / TESS, x, nn);
-        fprintf(f, "v %.9g %.9g %.9g\nvn %.6g %.6g %.6g\n", x[0], x[1], x[2], nn[0], nn[1], nn[2]);
-      }
-  for (k = 0, base = 1; k < np; ++k, base += per) {
-    /* Row i holds TESS + 1 - i vertices. */
-    int row = base;
-    for (i = 0; i < TESS; ++i) {
-      const int len = TESS + 1 - i, next = row + len;
-      for (j = 0; j + 1 < len; ++j) {
-        fprintf(f, "f %d//%d %d//%d %d//%d\n", row + j, row + j, next + j, next + j, row + j + 1,
-                row + j + 1);
-        if (j + 2 < len)
-          fprintf(f, "f %d//%d %d//%d %d//%d\n", row + j + 1, row + j + 1, next + j, next + j,
-                  next + j + 1, next + j + 1);
-      }
-      row = next;
-    }
-  }
-  fclose(f);
-  fprintf(report, "  wrote %s/%s\n", dir, file);
-  keep_patchwork(ctx, iso, patches, np, name);
 }
 
 /* Across every interior edge of the patchwork: the largest gap between
