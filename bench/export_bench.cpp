@@ -121,9 +121,9 @@ void BM_TessellateBlend1e4(benchmark::State& state) { tessellate(state, true); }
 // A sphere skin (seed 002, the skew skin of the tests: spheres of radii 1
 // and 1.2, a curved spine, the RMF pairing) planned and meshed to a chordal
 // tolerance of 1e-4 (SPEC.md §8j.2a).
-void BM_SkinTessellate(benchmark::State& state) {
-  cyc_context* ctx = nullptr;
-  cyc_context_create(nullptr, &ctx);
+// The skew skin of tests/sphere_skin_test.cpp (null on failure, with the
+// context's message).
+cyc_sphere_skin* skew_skin(cyc_context* ctx) {
   cyc_skin_end ends[2];
   const double ax[3] = {1.0 / std::sqrt(2.0), 0.6 / std::sqrt(2.0), 0.8 / std::sqrt(2.0)};
   const double m0[3] = {0, 0, 0}, p0[3] = {0.3, 0, 0}, t0[3] = {3, 0, 0};
@@ -133,7 +133,44 @@ void BM_SkinTessellate(benchmark::State& state) {
   cyc_sphere_skin* skin = nullptr;
   if (cyc_skin_end_from_sphere(ctx, m0, 1.0, p0, t0, &ends[0]) != CYC_OK ||
       cyc_skin_end_from_sphere(ctx, m1, 1.2, p1, t1, &ends[1]) != CYC_OK ||
-      cyc_sphere_skin_create(ctx, &ends[0], &ends[1], nullptr, &skin) != CYC_OK) {
+      cyc_sphere_skin_create(ctx, &ends[0], &ends[1], nullptr, &skin) != CYC_OK)
+    return nullptr;
+  return skin;
+}
+
+// The export of the skew skin over whole circles at the default tolerance
+// 1e-9 (SPEC 8j.1b): patches of degree (10, 4).
+void BM_SkinExport(benchmark::State& state) {
+  cyc_context* ctx = nullptr;
+  cyc_context_create(nullptr, &ctx);
+  cyc_sphere_skin* skin = skew_skin(ctx);
+  if (!skin) {
+    state.SkipWithError(cyc_context_last_error(ctx));
+    cyc_context_destroy(ctx);
+    return;
+  }
+  const cyc_export_domain whole = {0, 1, 0, 0, 1};
+  cyc_skin_export_report r{};
+  for (auto _ : state) {
+    cyc_bezier_export* e = nullptr;
+    if (cyc_sphere_skin_export_create(ctx, skin, &whole, nullptr, &e, &r) != CYC_OK) {
+      state.SkipWithError(cyc_context_last_error(ctx));
+      break;
+    }
+    benchmark::DoNotOptimize(e);
+    cyc_bezier_export_destroy(e);
+  }
+  state.counters["t_intervals"] = r.t_intervals;
+  state.counters["error"] = r.error_estimate;
+  cyc_sphere_skin_destroy(ctx, skin);
+  cyc_context_destroy(ctx);
+}
+
+void BM_SkinTessellate(benchmark::State& state) {
+  cyc_context* ctx = nullptr;
+  cyc_context_create(nullptr, &ctx);
+  cyc_sphere_skin* skin = skew_skin(ctx);
+  if (!skin) {
     state.SkipWithError(cyc_context_last_error(ctx));
     cyc_context_destroy(ctx);
     return;
@@ -170,3 +207,4 @@ BENCHMARK(BM_ExportBlendWholeCircles)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TessellatePlanBlend1e4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TessellateBlend1e4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SkinTessellate)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SkinExport)->Unit(benchmark::kMillisecond);
