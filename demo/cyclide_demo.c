@@ -47,6 +47,20 @@ static int check(cyc_context* ctx, int status, const char* what) {
   return status;
 }
 
+static double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static double norm3(const double a[3]) { return sqrt(dot3(a, a)); }
+static double dist3(const double a[3], const double b[3]) {
+  const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  return norm3(d);
+}
+static void cross3(const double a[3], const double b[3], double r[3]) {
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
 static FILE* open_out(const char* dir, const char* name) {
   char path[1024];
   FILE* f;
@@ -205,6 +219,145 @@ static void write_surface(cyc_context* ctx, const cyc_surface* s, const char* di
             NU * NV, worst, scale * scale * scale);
   fprintf(report, "  points with undefined normal (singular, e.g. P2, P3): %zu\n", singular);
   write_mesh(ctx, dir, name, pts, nrm, NU, NV, 1, report);
+}
+
+/* ---- Scenes of circle-family surfaces that share end circles (a blend
+ * and the shapes it joins): each part is meshed adaptively
+ * (cyc_tessellate_plan / _eval) with one number of arcs for the whole scene
+ * and, at every shared circle, one world reference vector for the angle 0
+ * on both sides, so both meshes have the same points there and
+ * cyc_mesh_write welds them (SPEC §8j.2, "Seams and joins"). Meshing each
+ * part from its own generator (write_surface) welds only by luck. */
+#define SCENE_MAX_PARTS 9
+#define SCENE_ROW_CAP 4096
+#define SCENE_MAX_SEGMENTS 256
+#define SCENE_TOLERANCE 2e-3 /* chordal, model units */
+
+typedef struct {
+  const cyc_surface* surface;
+  char name[64];
+  implicit_fn implicit; /* NULL: no residual to report */
+} scene_part;
+
+/* Do two end circles coincide (to 1e-9 of their size; points excluded)? */
+static int same_circle(const cyc_circle* a, const cyc_circle* b) {
+  const double r = sqrt(a->radius2), tol = 1e-9 * (1 + norm3(a->center) + r);
+  double c[3];
+  cross3(a->normal, b->normal, c);
+  return r > tol && dist3(a->center, b->center) <= tol && fabs(r - sqrt(b->radius2)) <= tol &&
+         norm3(c) <= 1e-9;
+}
+
+/* The angle 0 at a shared circle: a fixed world vector far from its axis
+ * (the planner projects it into the circle's plane). */
+static void reference_for(const cyc_circle* c, double ref[3]) {
+  static const double g[2][3] = {{0.6, -0.48, 0.64}, {-0.48, 0.64, 0.6}};
+  const int k = fabs(dot3(g[0], c->normal)) <= fabs(dot3(g[1], c->normal)) ? 0 : 1;
+  memcpy(ref, g[k], sizeof g[k]);
+}
+
+/* Finds the end circles parts share and gives both sides one reference
+ * (has[k][e]: end e of part k has refs[k][e]). Returns the joins found. */
+static int find_joins(cyc_context* ctx, const scene_part* parts, int n,
+                      double refs[][2][3], int has[][2]) {
+  cyc_circle ends[SCENE_MAX_PARTS][2];
+  int k, h, e, f, joins = 0;
+  for (k = 0; k < n; ++k) {
+    double u[2];
+    check(ctx, cyc_surface_domain(ctx, parts[k].surface, &u[0], &u[1]), "cyc_surface_domain");
+    for (e = 0; e < 2; ++e) {
+      check(ctx, cyc_surface_circle(ctx, parts[k].surface, u[e], &ends[k][e]),
+            "cyc_surface_circle");
+      has[k][e] = 0;
+    }
+  }
+  for (k = 0; k < n; ++k)
+    for (h = 0; h < k; ++h)
+      for (e = 0; e < 2; ++e)
+        for (f = 0; f < 2; ++f) {
+          if (has[k][e] || !same_circle(&ends[h][f], &ends[k][e])) continue;
+          if (!has[h][f]) reference_for(&ends[h][f], refs[h][f]);
+          memcpy(refs[k][e], refs[h][f], sizeof refs[k][e]);
+          has[h][f] = has[k][e] = 1;
+          ++joins;
+        }
+  return joins;
+}
+
+/* The arcs per circle for the whole scene: the most any part needs. */
+static int scene_segments(cyc_context* ctx, const scene_part* parts, int n, void* work,
+                          size_t work_bytes, double* us) {
+  cyc_tessellation_options o;
+  cyc_tessellation_plan plan;
+  int k, N = 3;
+  cyc_tessellation_options_default(&o);
+  o.chordal_tolerance = SCENE_TOLERANCE;
+  o.max_segments = SCENE_MAX_SEGMENTS;
+  for (k = 0; k < n; ++k) {
+    check(ctx, cyc_tessellate_plan(ctx, parts[k].surface, &o, us, SCENE_ROW_CAP, work, work_bytes,
+                                   &plan),
+          "cyc_tessellate_plan");
+    if (plan.segments > N) N = plan.segments;
+  }
+  return N;
+}
+
+/* One part with N arcs and its references: kept, written as OBJ, with its
+ * implicit residual and singular normals in the report. */
+static void mesh_part(cyc_context* ctx, const scene_part* P, int N, const double* ref0,
+                      const double* ref1, void* work, size_t work_bytes, double* us,
+                      const char* dir, FILE* report) {
+  cyc_tessellation_options o;
+  cyc_tessellation_plan plan;
+  cyc_buffer3 pts, nrm;
+  size_t n, singular = 0, i;
+  double worst = 0;
+  cyc_tessellation_options_default(&o);
+  o.chordal_tolerance = SCENE_TOLERANCE;
+  o.max_segments = SCENE_MAX_SEGMENTS;
+  o.fixed_segments = N;
+  o.reference_u0 = ref0;
+  o.reference_u1 = ref1;
+  check(ctx, cyc_tessellate_plan(ctx, P->surface, &o, us, SCENE_ROW_CAP, work, work_bytes, &plan),
+        "cyc_tessellate_plan");
+  n = (size_t)plan.rows * (size_t)plan.segments;
+  pts.data = (double*)calloc(3 * n, sizeof(double));
+  nrm.data = (double*)calloc(3 * n, sizeof(double));
+  if (!pts.data || !nrm.data) exit(1);
+  pts.capacity = nrm.capacity = n;
+  pts.stride = nrm.stride = 3;
+  check(ctx, cyc_tessellate_eval(ctx, P->surface, &plan, us, pts, nrm, &singular),
+        "cyc_tessellate_eval");
+  for (i = 0; P->implicit && i < n; ++i) worst = fmax(worst, fabs(P->implicit(pts.data + 3 * i)));
+  fprintf(report, "  %s: %d circles x %d points (chordal tolerance %g)%s", P->name, plan.rows,
+          plan.segments, SCENE_TOLERANCE, ref0 || ref1 ? ", shared circles on a common seam" : "");
+  if (P->implicit) fprintf(report, "; implicit residual %.2e", worst);
+  fprintf(report, "; singular normals %zu\n", singular);
+  write_obj(ctx, dir, keep_mesh(P->name, pts.data, nrm.data, 1, plan.rows, plan.segments, 1),
+            report);
+  free(pts.data);
+  free(nrm.data);
+}
+
+/* Meshes the parts of a scene so that every shared end circle welds;
+ * returns the number of shared circles (the joins cyc_mesh_write must weld). */
+static int write_scene_parts(cyc_context* ctx, const scene_part* parts, int n, const char* dir,
+                             FILE* report) {
+  static double us[SCENE_ROW_CAP];
+  double refs[SCENE_MAX_PARTS][2][3];
+  int has[SCENE_MAX_PARTS][2], k, joins, N;
+  const size_t work_bytes = cyc_tessellation_workspace_size(SCENE_MAX_SEGMENTS);
+  void* work = malloc(work_bytes);
+  if (!work || n > SCENE_MAX_PARTS) exit(1);
+  joins = find_joins(ctx, parts, n, refs, has);
+  N = scene_segments(ctx, parts, n, work, work_bytes, us);
+  for (k = 0; k < n; ++k)
+    mesh_part(ctx, &parts[k], N, has[k][0] ? refs[k][0] : NULL, has[k][1] ? refs[k][1] : NULL,
+              work, work_bytes, us, dir, report);
+  free(work);
+  fprintf(report, "  %d parts share %d end circles: one seam and %d arcs per circle there\n", n,
+          joins, N);
+  return joins;
 }
 
 /* Polylines of the input curves and of the spine (PRCS) or directrix. */
@@ -807,7 +960,8 @@ static void nway_demo(cyc_context* ctx, const char* dir, FILE* report) {
   cyc_surface* R[3];
   const cyc_surface* ends[3];
   cyc_surface *B[6], *sphere;
-  int counts[3], i, k;
+  scene_part parts[SCENE_MAX_PARTS];
+  int counts[3], i, k, n = 0, joins;
   cyc_nway_options o;
   cyc_nway_report rep;
   fprintf(report, "\nn-way blend (seed 001 sec. 6): Example 6.2, s = (0.5, 0.3, -0.25), r = 2.6\n");
@@ -821,7 +975,6 @@ static void nway_demo(cyc_context* ctx, const char* dir, FILE* report) {
     cyc_curve_destroy(ctx, dc);
     cyc_curve_destroy(ctx, ncv);
     ends[i] = R[i];
-    write_surface(ctx, R[i], dir, names[i], NULL, report);
   }
   cyc_nway_options_init(&o);
   o.center = CYC_NWAY_CENTER_GIVEN;
@@ -835,8 +988,24 @@ static void nway_demo(cyc_context* ctx, const char* dir, FILE* report) {
   check(ctx, cyc_blend_ringed_nway(ctx, ends, u, 3, &o, B, counts, &rep), "cyc_blend_ringed_nway");
   fprintf(report, "  lambda_i = 0.19: |d_i(1) - s| = %.5f, %.5f, %.5f; smallest circle gap "
                   "%.4f rad\n", rep.distance[0], rep.distance[1], rep.distance[2], rep.min_gap);
+  /* The scene: R1..R3 and each blend's pieces, welded where they share
+   * circles (R_i(1) and the first piece, the pieces of a two-piece blend). */
+  memset(parts, 0, sizeof parts);
   for (i = 0; i < 3; ++i) {
-    write_surface(ctx, B[2 * i], dir, blend_names[i], NULL, report);
+    parts[n].surface = R[i];
+    snprintf(parts[n++].name, sizeof parts[0].name, "%s", names[i]);
+  }
+  for (i = 0; i < 3; ++i)
+    for (k = 0; k < counts[i]; ++k) {
+      parts[n].surface = B[2 * i + k];
+      snprintf(parts[n++].name, sizeof parts[0].name, "%s%s", blend_names[i], k ? "b" : "");
+    }
+  joins = write_scene_parts(ctx, parts, n, dir, report);
+  if (joins != n - 3) { /* each blend piece meets its predecessor */
+    fprintf(stderr, "demo: n-way blend: %d shared circles found, %d expected\n", joins, n - 3);
+    exit(1);
+  }
+  for (i = 0; i < 3; ++i) {
     for (k = 0; k < counts[i]; ++k) cyc_surface_destroy(ctx, B[2 * i + k]);
     cyc_surface_destroy(ctx, R[i]);
   }
@@ -946,6 +1115,9 @@ static void skin_demos(cyc_context* ctx, const char* dir, FILE* report) {
   check(ctx, cyc_sphere_skin_chain_create(ctx, chain, 5, &o, &skin, &bad),
         "cyc_sphere_skin_chain_create");
   check(ctx, cyc_sphere_skin_patch_count(ctx, skin, &n), "patch count");
+  /* Every patch on the same theta samples (write_skin): the chain's frame
+   * is continuous, so patch k at t = 1 and patch k + 1 at t = 0 are the
+   * same points and the gallery's mesh welds each shared circle. */
   for (k = 0; k < n; ++k) {
     char name[64];
     snprintf(name, sizeof name, "skin_chain_patch%d", k);
@@ -1035,21 +1207,14 @@ static void report_pn(cyc_context* ctx, const cyc_dupin* d, FILE* report) {
           worst_unit, worst_plane, worst_orth);
 }
 
-static void write_cone(cyc_context* ctx, const cyc_lie_cone* k, const char* dir, const char* name,
-                       FILE* report) {
-  cyc_surface* s;
-  check(ctx, cyc_cone_surface_create(ctx, k, -2, 0, &s), "cyc_cone_surface_create");
-  write_surface(ctx, s, dir, name, NULL, report);
-  cyc_surface_destroy(ctx, s);
-}
-
 static void cyclide_blend_demo(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
                                const char* dir, const char* name, FILE* report) {
   cyc_cyclide_blend b;
   cyc_cyclide_blend_report c;
+  cyc_surface* S[4];
+  scene_part parts[4];
   double q, t0;
-  int i, dim;
-  char file[256];
+  int i, dim, joins;
   check(ctx, cyc_cyclide_blend_dimension(ctx, r, s, &dim), "cyc_cyclide_blend_dimension");
   t0 = now_seconds();
   check(ctx, cyc_cyclide_blend_auto(ctx, r, s, 64, &b, &q), "cyc_cyclide_blend_auto");
@@ -1060,17 +1225,27 @@ static void cyclide_blend_demo(cyc_context* ctx, const cyc_lie_cone* r, const cy
   check(ctx, cyc_cyclide_blend_continuity(ctx, r, s, &b, 64, &c), "cyc_cyclide_blend_continuity");
   fprintf(report, "  G1 at cone R: gap %.1e, angle %.1e rad; joint: gap %.1e, angle %.1e; cone S: gap %.1e, angle %.1e\n",
           c.gap[0], c.angle[0], c.gap[1], c.angle[1], c.gap[2], c.angle[2]);
-  for (i = 0; i < b.pieces; ++i) {
-    cyc_surface* p;
-    check(ctx, cyc_cyclide_blend_surface_create(ctx, &b, i, &p), "cyc_cyclide_blend_surface_create");
-    snprintf(file, sizeof file, "%s_piece%d", name, i);
-    write_surface(ctx, p, dir, file, NULL, report);
-    cyc_surface_destroy(ctx, p);
+  /* The scene's order: cone R, the pieces from R's circle, cone S. */
+  memset(parts, 0, sizeof parts);
+  check(ctx, cyc_cone_surface_create(ctx, r, -2, 0, &S[0]), "cyc_cone_surface_create");
+  for (i = 0; i < b.pieces; ++i)
+    check(ctx, cyc_cyclide_blend_surface_create(ctx, &b, i, &S[1 + i]),
+          "cyc_cyclide_blend_surface_create");
+  check(ctx, cyc_cone_surface_create(ctx, s, -2, 0, &S[1 + b.pieces]), "cyc_cone_surface_create");
+  for (i = 0; i < b.pieces + 2; ++i) {
+    parts[i].surface = S[i];
+    if (i == 0 || i == b.pieces + 1)
+      snprintf(parts[i].name, sizeof parts[i].name, "%s_cone_%c", name, i ? 's' : 'r');
+    else
+      snprintf(parts[i].name, sizeof parts[i].name, "%s_piece%d", name, i - 1);
   }
-  snprintf(file, sizeof file, "%s_cone_r", name);
-  write_cone(ctx, r, dir, file, report);
-  snprintf(file, sizeof file, "%s_cone_s", name);
-  write_cone(ctx, s, dir, file, report);
+  joins = write_scene_parts(ctx, parts, b.pieces + 2, dir, report);
+  if (joins != b.pieces + 1) {
+    fprintf(stderr, "demo: %s: %d shared circles found, %d expected\n", name, joins,
+            b.pieces + 1);
+    exit(1);
+  }
+  for (i = 0; i < b.pieces + 2; ++i) cyc_surface_destroy(ctx, S[i]);
 }
 
 static void dupin_demos(cyc_context* ctx, const char* dir, FILE* report) {
@@ -1134,14 +1309,6 @@ static void dupin_demos(cyc_context* ctx, const char* dir, FILE* report) {
  * offsets (§3), a parabolic ring cyclide as a circle family with a cone of
  * Thm. 4.2 (§4.1), and the G1 design of an ellipsoid cap from oriented
  * points by parabolic cyclide triangles, with its offset (§4.2). */
-static double dot3(const double a[3], const double b[3]) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-static double norm3(const double a[3]) { return sqrt(dot3(a, a)); }
-static double dist3(const double a[3], const double b[3]) {
-  const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  return norm3(d);
-}
 
 /* sigma^{-1}(y): the unit normal of the isotropic parameter y (§2). */
 static void normal_of(double y1, double y2, double n[3]) {
@@ -1484,36 +1651,40 @@ static void laguerre_demos(cyc_context* ctx, const char* dir, FILE* report) {
 typedef struct {
   const char* name;
   const char* title;
+  int joins; /* shared circles that must weld (the demo fails otherwise) */
   const char* parts[MAX_SCENE_PARTS];
 } demo_scene;
 
-/* Scenes: meshes shown together (the joins of blends, chains, patchworks). */
+/* Scenes: meshes shown together (the joins of blends, chains, patchworks).
+ * The skins touch their spheres tangentially (no shared row); the n-way
+ * blends' second pieces (B1b ...) exist only when a blend needs two. */
 static const demo_scene kScenes[] = {
-    {"scene_blend_ringed_c1", "C1 ringed blend of the cones of Fig. 6",
+    {"scene_blend_ringed_c1", "C1 ringed blend of the cones of Fig. 6", 2,
      {"blend_cone_a", "blend_ringed_k1", "blend_cone_b"}},
-    {"scene_blend_canal_g1", "G1 canal blend of the cones of Fig. 6",
+    {"scene_blend_canal_g1", "G1 canal blend of the cones of Fig. 6", 2,
      {"blend_cone_a", "blend_canal_k2", "blend_cone_b"}},
-    {"scene_blend_obstacle", "C2 ringed blend moved around a spherical obstacle (Ceres)",
+    {"scene_blend_obstacle", "C2 ringed blend moved around a spherical obstacle (Ceres)", 2,
      {"blend_cone_a", "blend_ringed_k2_optimized", "blend_cone_b", "blend_obstacle"}},
-    {"scene_nway_ex62", "3-way ringed blend of Example 6.2 through an auxiliary sphere",
-     {"ringed_ex62_R1", "ringed_ex62_R2", "ringed_ex62_R3", "ringed_ex62_B1", "ringed_ex62_B2",
-      "ringed_ex62_B3"}},
-    {"scene_implicit_ex76", "Example 7.6: implicit blend of two cylinders by two ringed pieces",
+    {"scene_nway_ex62", "3-way ringed blend of Example 6.2 through an auxiliary sphere", 3,
+     {"ringed_ex62_R1", "ringed_ex62_R2", "ringed_ex62_R3", "ringed_ex62_B1", "ringed_ex62_B1b",
+      "ringed_ex62_B2", "ringed_ex62_B2b", "ringed_ex62_B3", "ringed_ex62_B3b"}},
+    {"scene_implicit_ex76", "Example 7.6: implicit blend of two cylinders by two ringed pieces", 1,
      {"implicit_ex76_2piece_0", "implicit_ex76_2piece_1"}},
-    {"scene_skin_rmf", "Rotation-minimizing skin of two spheres (seed 002)",
+    {"scene_skin_rmf", "Rotation-minimizing skin of two spheres (seed 002)", 0,
      {"skin_sphere0", "skin_rmf", "skin_sphere1"}},
-    {"scene_skin_chain", "Sphere-chain skin on a helix (seed 002)",
+    {"scene_skin_chain", "Sphere-chain skin on a helix (seed 002)", 3,
      {"skin_chain_sphere0", "skin_chain_patch0", "skin_chain_sphere1", "skin_chain_patch1",
       "skin_chain_sphere2", "skin_chain_patch2", "skin_chain_sphere3", "skin_chain_patch3",
       "skin_chain_sphere4"}},
-    {"scene_dupin_torus", "Dupin cyclide of three spheres (seed 003 Algorithm 1): a torus",
+    {"scene_dupin_torus", "Dupin cyclide of three spheres (seed 003 Algorithm 1): a torus", 2,
      {"dupin_torus_inner", "dupin_torus_outer"}},
-    {"scene_cyclide_elbow", "Single cyclide blend of two cylinders (seed 003 Algorithm 2)",
+    {"scene_cyclide_elbow", "Single cyclide blend of two cylinders (seed 003 Algorithm 2)", 2,
      {"cyclide_elbow_cone_r", "cyclide_elbow_piece0", "cyclide_elbow_cone_s"}},
     {"scene_cyclide_double", "Double cyclide blend of a cylinder and a cone (seed 003 Algorithm 2)",
+     3,
      {"cyclide_double_cone_r", "cyclide_double_piece0", "cyclide_double_piece1",
       "cyclide_double_cone_s"}},
-    {"scene_pn_offsets", "PN surface and its exact offsets at +-0.5 (seed 004 Thm. 3.2)",
+    {"scene_pn_offsets", "PN surface and its exact offsets at +-0.5 (seed 004 Thm. 3.2)", 0,
      {"pn_surface_offset_minus", "pn_surface", "pn_surface_offset_plus"}},
 };
 
@@ -1642,9 +1813,31 @@ static void json_lines_inner(FILE* f, const char* body) {
   }
 }
 
-/* One glb of grids; prints the weld statistics into stats_line. */
-static void write_glb(cyc_context* ctx, const char* dir, const char* name, const cyc_grid_mesh* g,
-                      int n, char* stats_line, size_t stats_size) {
+/* The distinct colours cyc_mesh_write gives grids g[0..n) (rgba 0: the
+ * palette entry of the grid's index mod 8): gallery.json's "colours". */
+static int distinct_colours(const cyc_grid_mesh* g, int n) {
+  int k, h, count = 0;
+  for (k = 0; k < n; ++k) {
+    const int pk = g[k].rgba[0] == 0 && g[k].rgba[1] == 0 && g[k].rgba[2] == 0 && g[k].rgba[3] == 0;
+    int seen = 0;
+    for (h = 0; h < k && !seen; ++h) {
+      const int ph =
+          g[h].rgba[0] == 0 && g[h].rgba[1] == 0 && g[h].rgba[2] == 0 && g[h].rgba[3] == 0;
+      if (pk && ph)
+        seen = h % 8 == k % 8;
+      else if (!pk && !ph)
+        seen = memcmp(g[h].rgba, g[k].rgba, sizeof g[k].rgba) == 0;
+    }
+    count += !seen;
+  }
+  return count;
+}
+
+/* One glb of grids; prints the weld statistics into stats_line (joins: the
+ * shared circles the scene must weld, < 0: not a scene). Returns the rows
+ * welded. */
+static int write_glb(cyc_context* ctx, const char* dir, const char* name, const cyc_grid_mesh* g,
+                     int n, int joins, char* stats_line, size_t stats_size) {
   char path[1024];
   cyc_mesh_write_options o;
   cyc_mesh_stats st;
@@ -1655,17 +1848,39 @@ static void write_glb(cyc_context* ctx, const char* dir, const char* name, const
     exit(1);
   }
   check(ctx, cyc_mesh_write(ctx, path, CYC_MESH_GLB, g, n, &o, &st), "cyc_mesh_write");
-  snprintf(stats_line, stats_size,
-           "mesh: %zu vertices, %zu triangles, %d grids, %d rows welded across joins",
-           st.vertices, st.triangles, n, st.welded_rows);
+  if (joins >= 0)
+    snprintf(stats_line, stats_size,
+             "mesh: %zu vertices, %zu triangles, %d grids, %d rows welded (%d shared circles)",
+             st.vertices, st.triangles, n, st.welded_rows, joins);
+  else
+    snprintf(stats_line, stats_size,
+             "mesh: %zu vertices, %zu triangles, %d grids, %d rows welded across joins",
+             st.vertices, st.triangles, n, st.welded_rows);
+  return st.welded_rows;
+}
+
+/* The report's last section: every scene's welded rows against its shared
+ * circles. Returns the number of scenes that weld fewer (not watertight). */
+static int report_welds(FILE* report, const demo_scene* S, const int* welded, int n) {
+  int i, short_scenes = 0;
+  fprintf(report, "\nGallery scenes: rows welded by cyc_mesh_write / shared circles that must weld\n");
+  for (i = 0; i < n; ++i) {
+    if (welded[i] < 0) continue; /* not written (a part missing) */
+    fprintf(report, "  %-24s %d / %d%s\n", S[i].name, welded[i], S[i].joins,
+            welded[i] < S[i].joins ? "  NOT WATERTIGHT" : "");
+    short_scenes += welded[i] < S[i].joins;
+  }
+  return short_scenes;
 }
 
 static void write_gallery(cyc_context* ctx, const char* dir, const char* report_path) {
+  enum { NSCENES = sizeof kScenes / sizeof kScenes[0] };
   static demo_section sec[256];
   static int model_section[MAX_MESHES];
   static cyc_grid_mesh grids[1024];
   char path[1024], stats[256];
   const int nsec = read_sections(report_path, sec, 256, model_section);
+  int welded[NSCENES];
   FILE* f;
   size_t i;
   int m, k, first = 1;
@@ -1704,8 +1919,9 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
       for (j = 0; j < ns && shown[j] != model_section[m]; ++j) continue;
       if (j == ns) shown[ns++] = model_section[m];
     }
+    welded[i] = -1;
     if (n == 0) continue;
-    write_glb(ctx, dir, S->name, grids, n, stats, sizeof stats);
+    welded[i] = write_glb(ctx, dir, S->name, grids, n, S->joins, stats, sizeof stats);
     fprintf(f, "%s\n  {\"name\": ", first ? "" : ",");
     first = 0;
     json_string(f, S->name);
@@ -1715,7 +1931,8 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
     json_string(f, ns ? seed_of(sec[shown[0]].header) : "000");
     fprintf(f, ", \"section\": ");
     json_string(f, ns ? sec[shown[0]].header : "");
-    fprintf(f, ", \"glb\": \"models/%s.glb\", \"up\": \"z\", \"residuals\": [", S->name);
+    fprintf(f, ", \"glb\": \"models/%s.glb\", \"up\": \"z\", \"colours\": %d, \"residuals\": [",
+            S->name, distinct_colours(grids, n));
     json_string(f, stats);
     for (j = 0; j < ns; ++j) {
       fputc(',', f);
@@ -1727,7 +1944,7 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
     const demo_mesh* M = &g_meshes[m];
     const int s = model_section[m];
     if (in_scene(M->name)) continue;
-    write_glb(ctx, dir, M->name, M->grids, M->ngrids, stats, sizeof stats);
+    write_glb(ctx, dir, M->name, M->grids, M->ngrids, -1, stats, sizeof stats);
     fprintf(f, ",\n  {\"name\": ");
     json_string(f, M->name);
     fprintf(f, ", \"title\": ");
@@ -1736,7 +1953,8 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
     json_string(f, s >= 0 ? seed_of(sec[s].header) : "000");
     fprintf(f, ", \"section\": ");
     json_string(f, s >= 0 ? sec[s].header : "");
-    fprintf(f, ", \"glb\": \"models/%s.glb\", \"up\": \"z\", \"residuals\": [", M->name);
+    fprintf(f, ", \"glb\": \"models/%s.glb\", \"up\": \"z\", \"colours\": %d, \"residuals\": [",
+            M->name, distinct_colours(M->grids, M->ngrids));
     json_string(f, stats);
     if (s >= 0) {
       fputc(',', f);
@@ -1749,6 +1967,20 @@ static void write_gallery(cyc_context* ctx, const char* dir, const char* report_
   for (k = 0; k < nsec; ++k) {
     free(sec[k].header);
     free(sec[k].body);
+  }
+  /* The weld counts go to the end of the report (after the sections the
+   * gallery quotes); a scene that must be watertight and is not fails. */
+  f = fopen(report_path, "a");
+  if (!f) {
+    perror(report_path);
+    exit(1);
+  }
+  k = report_welds(f, kScenes, welded, NSCENES);
+  fclose(f);
+  if (k > 0) {
+    fprintf(stderr, "demo: %d scene(s) weld fewer rows than their shared circles (see %s)\n", k,
+            report_path);
+    exit(1);
   }
 }
 
