@@ -23,7 +23,8 @@ from ._lib import (CYC_SURFACE_PRCS, CYC_SURFACE_PRRS, CYC_SURFACE_RINGED, CYC_S
                    CYC_SURFACE_PARABOLIC, CYC_SKIN_RMF, CYC_SKIN_KUNKLI_HOFFMANN,
                    CYC_SKIN_CROSS_TANGENTS, CYC_RMF_REFERENCE, CYC_RMF_DOUBLE_REFLECTION,
                    CYC_DUPIN_DEGENERATE, CYC_DUPIN_PARABOLIC, CYC_DUPIN_QUARTIC,
-                   CYC_MESH_OBJ, CYC_MESH_PLY, CYC_MESH_STL, CYC_MESH_GLB)
+                   CYC_MESH_OBJ, CYC_MESH_PLY, CYC_MESH_STL, CYC_MESH_GLB, CYC_LIE_SPHERE,
+                   CYC_LIE_POINT, CYC_LIE_PLANE, CYC_LIE_POINT_AT_INFINITY)
 from .errors import (STATUS, Error, InvalidInputError, NotFiniteError, BadDomainError,
                      GeometryError, NumericalError, ResourceError, BufferTooSmallError,
                      OutOfMemoryError, UnsupportedError, InternalError, ClosedError)
