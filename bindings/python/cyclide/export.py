@@ -80,8 +80,12 @@ class Mesh(GridMesh):
         self.depth_limited = plan.depth_limited
         self.singular = singular
         self._raw = raw  # the C buffers (reused by the writer without copies)
+        self._raw_views = (points, normals)
 
     def _c(self):
+        if (self.points is not self._raw_views[0] or self.normals is not self._raw_views[1]
+                or self.rows * self.cols != self._raw[0].shape[0]):
+            return GridMesh._c(self)  # replaced by the caller: convert those
         pts, nrm = self._raw
         g = L.cyc_grid_mesh()
         g.points, g.normals = pts.ptr, nrm.ptr

@@ -346,6 +346,12 @@ class Meshes(Case):
             # the copy's end rows are welded onto the mesh's, its inner rows not
             self.assertEqual(two.vertices, 2 * st.vertices - 2 * m.segments)
             self.assertEqual(two.welded_rows, 2)
+            # a mesh whose points were replaced writes the new points
+            moved = s.tessellate(chordal_tolerance=tol)
+            moved.points = [[x + 10.0, y, z] for x, y, z in pts]
+            st2 = cyclide.mesh_write(self.ctx, os.path.join(d, "moved.obj"), [moved])
+            self.assertAlmostEqual(st2.coordinate_sum, st.coordinate_sum + 10.0 * st.vertices,
+                                   delta=1e-6 * st.vertices)
             with self.assertRaises(cyclide.ResourceError) as cm:
                 cyclide.mesh_write(self.ctx, os.path.join(d, "no", "such", "dir.obj"), [m])
             self.assertEqual(cm.exception.status, cyclide.CYC_E_IO)
