@@ -1028,6 +1028,32 @@ TEST(AllocFreeLaguerre, EvaluatorsPatchesAndDesign) {
 
 // Issue 9: the tessellation (plan and mesh) and the queries of a Bezier
 // export (its creation allocates, through the context) never allocate.
+// Issue 10 item 4: a static context in a stack block (SPEC.md §9b):
+// creating curves and a surface, evaluating, destroying -- no heap at all.
+TEST(CallerMemory, NoHeapAtAll) {
+  alignas(16) static unsigned char block[1 << 16];
+  int bad = 0;
+  const Heap h = measure([&] {
+    cyc_context* ctx = nullptr;
+    bad += cyc_context_init_static(block, sizeof block, nullptr, &ctx) != CYC_OK;
+    const double O[3] = {0, 0, 0}, X[3] = {1, 0, 0}, P[3] = {0, 0, 1}, w[3] = {2, 1, 0};
+    cyc_curve *l1 = nullptr, *l2 = nullptr;
+    cyc_surface* s = nullptr;
+    bad += cyc_curve_create_line(ctx, O, X, &l1) != CYC_OK;
+    bad += cyc_curve_create_line(ctx, P, w, &l2) != CYC_OK;
+    bad += cyc_prcs_create(ctx, l1, l2, nullptr, -0.5, 0.5, &s) != CYC_OK;
+    double x[3], n[3];
+    bad += cyc_surface_eval(ctx, s, 0.1, 0.2, x, nullptr, nullptr, n) != CYC_OK;
+    cyc_surface_destroy(ctx, s);
+    cyc_curve_destroy(ctx, l2);
+    cyc_curve_destroy(ctx, l1);
+    cyc_context_destroy(ctx);
+  });
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(h.allocations, 0);
+  EXPECT_EQ(h.frees, 0);
+}
+
 TEST(AllocFreeExport, TessellationAndPatchQueries) {
   cyc_context* ctx = nullptr;
   ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);

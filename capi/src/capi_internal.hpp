@@ -24,12 +24,27 @@ using cyclide::Surface;
 
 // ------------------------------------------------------------ handles
 
+// The caller-memory tier (cyc_context_init_static): a block of the
+// caller's memory that handles are carved from, in order; a free gives the
+// memory back only for the most recent block (a creator's scratch), others
+// stay used until the caller reuses the whole block. Past the block's end
+// the fallback allocator serves (none: CYC_E_OUT_OF_MEMORY).
+struct CallerArena {
+  unsigned char* begin = nullptr;
+  unsigned char* next = nullptr;
+  unsigned char* end = nullptr;
+  unsigned char* last = nullptr;  // the most recent block, or null
+  cyc_allocator fallback = {nullptr, nullptr, nullptr};
+};
+
 struct cyc_context {
   cyc_allocator allocator;
   cyc_error_handler handler = nullptr;
   void* handler_userdata = nullptr;
   int last_status = CYC_OK;
   char message[CYC_ERROR_MESSAGE_SIZE] = {0};
+  bool caller_memory = false;  // in the caller's block (cyc_context_init_static)
+  CallerArena arena;           // used when caller_memory
 };
 
 struct cyc_curve {
@@ -50,7 +65,7 @@ struct cyc_sphere_skin {
   cyclide::SphereSkin* patches = nullptr;
 };
 
-// An exact rational Bezier export (export_c.cpp, skin_export_c.cpp): a
+// An exact rational Bezier export (export_c.cpp, sphere_skin_c.cpp): a
 // header and the patches in one allocation.
 struct cyc_bezier_export {
   cyc_allocator allocator;

@@ -2,6 +2,8 @@
 // (`run`) that checks the context, maps exceptions to statuses, records the
 // last status and message in the context, and calls the error handler.
 // Outputs are written only after everything has succeeded.
+#include <cstdint>
+
 #include "capi_internal.hpp"
 #include "cyclide/darboux.hpp"
 #include "cyclide/darboux_lines.hpp"
@@ -149,8 +151,72 @@ int cyc_context_create(const cyc_allocator* allocator, cyc_context** out) {
 void cyc_context_destroy(cyc_context* ctx) {
   if (!ctx) return;
   const cyc_allocator a = ctx->allocator;
+  const bool static_context = ctx->caller_memory;
   ctx->~cyc_context();
-  a.free(a.userdata, ctx);
+  if (!static_context) a.free(a.userdata, ctx);  // a static context's block is the caller's
+}
+
+// ------------------------------------------------------------ caller memory
+
+namespace {
+
+// The static context's allocator (userdata = the context): carve the block
+// in order, then the fallback.
+void* arena_alloc(void* userdata, size_t size, size_t alignment) {
+  CallerArena& A = static_cast<cyc_context*>(userdata)->arena;
+  const auto p = reinterpret_cast<std::uintptr_t>(A.next);
+  const std::uintptr_t q = (p + alignment - 1) / alignment * alignment;
+  const auto end = reinterpret_cast<std::uintptr_t>(A.end);
+  if (q >= p && q <= end && size <= end - q) {
+    A.last = reinterpret_cast<unsigned char*>(q);
+    A.next = A.last + size;
+    return A.last;
+  }
+  return A.fallback.alloc ? A.fallback.alloc(A.fallback.userdata, size, alignment) : nullptr;
+}
+
+void arena_free(void* userdata, void* ptr) {
+  if (!ptr) return;
+  CallerArena& A = static_cast<cyc_context*>(userdata)->arena;
+  auto* p = static_cast<unsigned char*>(ptr);
+  if (p >= A.begin && p < A.end) {
+    if (p == A.last) A.next = A.last, A.last = nullptr;  // the most recent block: give it back
+    return;
+  }
+  if (A.fallback.free) A.fallback.free(A.fallback.userdata, ptr);
+}
+
+// Bytes an object takes from a block: its size plus the worst alignment slack.
+constexpr size_t static_bytes(size_t size, size_t alignment) { return size + alignment - 1; }
+
+}  // namespace
+
+size_t cyc_context_static_size(void) { return static_bytes(sizeof(cyc_context), alignof(cyc_context)); }
+size_t cyc_surface_static_size(void) { return static_bytes(sizeof(cyc_surface), alignof(cyc_surface)); }
+size_t cyc_curve_static_size(void) { return static_bytes(sizeof(cyc_curve), alignof(cyc_curve)); }
+
+int cyc_context_init_static(void* mem, size_t size, const cyc_allocator* fallback,
+                            cyc_context** out) {
+  if (!mem || !out) return CYC_E_NULL_ARGUMENT;
+  if (fallback && (!fallback->alloc || !fallback->free)) return CYC_E_INVALID_ARGUMENT;
+  if (size < cyc_context_static_size()) return CYC_E_BUFFER_TOO_SMALL;
+  const auto p = reinterpret_cast<std::uintptr_t>(mem);
+  const size_t pad = (alignof(cyc_context) - p % alignof(cyc_context)) % alignof(cyc_context);
+  auto* block = static_cast<unsigned char*>(mem);
+  cyc_context* ctx = new (block + pad) cyc_context();
+  ctx->caller_memory = true;
+  ctx->arena.begin = block;
+  ctx->arena.next = block + pad + sizeof(cyc_context);
+  ctx->arena.end = block + size;
+  if (fallback) ctx->arena.fallback = *fallback;
+  ctx->allocator = {arena_alloc, arena_free, ctx};
+  *out = ctx;
+  return CYC_OK;
+}
+
+size_t cyc_context_static_remaining(const cyc_context* ctx) {
+  if (!ctx || !ctx->caller_memory) return 0;
+  return size_t(ctx->arena.end - ctx->arena.next);
 }
 
 const char* cyc_context_last_error(const cyc_context* ctx) {

@@ -122,6 +122,37 @@ CYC_API int cyc_context_last_status(const cyc_context* ctx);
 CYC_API int cyc_context_set_error_handler(cyc_context* ctx, cyc_error_handler handler,
                                           void* userdata);
 
+/* ------------------------------------------------ caller memory (issue 10)
+ * The caller-memory tier (SPEC.md §9b): a context placed in the caller's
+ * block, and every handle created through it carved from the rest of that
+ * block, so a hot loop's surfaces and curves live in memory the caller
+ * owns (an arena on the stack, in a pool, in shared memory) and nothing
+ * touches the heap. Size the block with the queries below:
+ *   cyc_context_static_size() + n_surfaces * cyc_surface_static_size()
+ *   + n_curves * cyc_curve_static_size()  (+ other handles' needs).
+ * Destroying a handle returns its bytes only if it is the block's most
+ * recent one; otherwise they stay used until the caller reuses the whole
+ * block. Handles of a static context must be destroyed (or simply
+ * abandoned) while the block is alive; cyc_context_destroy on a static
+ * context frees nothing. */
+
+/** Bytes a static context needs for itself (alignment slack included). */
+CYC_API size_t cyc_context_static_size(void);
+/** Bytes one surface (cyc_surface) takes from a static context's block. */
+CYC_API size_t cyc_surface_static_size(void);
+/** Bytes one curve (cyc_curve) takes from a static context's block. */
+CYC_API size_t cyc_curve_static_size(void);
+/** Place a context at mem (any alignment; size bytes, at least
+ *  cyc_context_static_size()); its handles are carved from the rest of the
+ *  block. fallback (may be NULL) serves allocations that do not fit; NULL:
+ *  those fail with CYC_E_OUT_OF_MEMORY. CYC_E_NULL_ARGUMENT,
+ *  CYC_E_BUFFER_TOO_SMALL, CYC_E_INVALID_ARGUMENT (a fallback without
+ *  alloc or free). *out is written only on success. */
+CYC_API int cyc_context_init_static(void* mem, size_t size, const cyc_allocator* fallback,
+                                    cyc_context** out);
+/** Bytes still free in a static context's block (0 for other contexts). */
+CYC_API size_t cyc_context_static_remaining(const cyc_context* ctx);
+
 /* ------------------------------------------------------------ curves */
 
 /** Polynomial curve p(u) = sum_k c_k u^k; coeffs holds degree+1 rows
