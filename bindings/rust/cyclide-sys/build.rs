@@ -50,7 +50,9 @@ fn main() {
     if let Some(dir) = lib_dirs.first() {
         // Tests, examples and binaries of this package find the library
         // without LD_LIBRARY_PATH (ELF platforms).
-        if cfg!(unix) && !cfg!(target_os = "macos") {
+        let family = env::var("CARGO_CFG_TARGET_FAMILY").unwrap_or_default();
+        let os = env::var("CARGO_CFG_TARGET_OS").unwrap_or_default();
+        if family == "unix" && os != "macos" && os != "ios" {
             println!("cargo:rustc-link-arg=-Wl,-rpath,{}", dir.display());
         }
         println!("cargo:lib_dir={}", dir.display());

@@ -912,6 +912,17 @@ extern "C" {
         handler: cyc_error_handler,
         userdata: *mut c_void,
     ) -> c_int;
+    // caller memory (issue 10): a context placed in the caller's block
+    pub fn cyc_context_static_size() -> usize;
+    pub fn cyc_surface_static_size() -> usize;
+    pub fn cyc_curve_static_size() -> usize;
+    pub fn cyc_context_init_static(
+        mem: *mut c_void,
+        size: usize,
+        fallback: *const cyc_allocator,
+        out: *mut *mut cyc_context,
+    ) -> c_int;
+    pub fn cyc_context_static_remaining(ctx: *const cyc_context) -> usize;
     pub fn cyc_curve_create_polynomial(
         ctx: *mut cyc_context,
         degree: c_int,

@@ -17,6 +17,11 @@ fn every_declared_function_is_exported() {
         cyc_context_last_error as *const (),
         cyc_context_last_status as *const (),
         cyc_context_set_error_handler as *const (),
+        cyc_context_static_size as *const (),
+        cyc_surface_static_size as *const (),
+        cyc_curve_static_size as *const (),
+        cyc_context_init_static as *const (),
+        cyc_context_static_remaining as *const (),
         cyc_curve_create_polynomial as *const (),
         cyc_curve_create_rational as *const (),
         cyc_curve_create_bezier as *const (),
@@ -222,7 +227,7 @@ fn every_declared_function_is_exported() {
         cyc_design_max_patches as *const (),
         cyc_design_cyclide_surface as *const (),
     ];
-    assert_eq!(fns.len(), 213);
+    assert_eq!(fns.len(), 218);
     assert!(fns.iter().all(|f| !f.is_null()));
 }
 
