@@ -22,5 +22,5 @@ CYCLIDE_BUILD_PACKAGES=(cmake ninja-build g++ pkg-config libeigen3-dev libceres-
 CYCLIDE_TEST_PACKAGES=(libgtest-dev librapidcheck-dev libbenchmark-dev clang
                        libclang-rt-14-dev binutils)
 # What the FFI tests need (issue 10, label ffi): Rust, Python with numpy,
-# libabigail's abidiff.
-CYCLIDE_FFI_PACKAGES=(cargo rustc python3 python3-numpy abigail-tools)
+# libabigail's abidiff, doxygen.
+CYCLIDE_FFI_PACKAGES=(cargo rustc python3 python3-numpy abigail-tools doxygen)

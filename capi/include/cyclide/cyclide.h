@@ -1612,10 +1612,11 @@ CYC_API int cyc_lie_in_contact(cyc_context* ctx, const double x[6], const double
  *  CYC_E_INVALID_ARGUMENT (k outside 0..6), CYC_E_NOT_FINITE. */
 CYC_API int cyc_lie_span(cyc_context* ctx, const double* vectors, int k, int* dim,
                          int signature[3]);
-/** The orthogonal complement (for the form) of span(vectors): *dim = 6 -
- *  dim span, its signature, and a Euclidean-orthonormal basis in basis
- *  (36 doubles, may be NULL): basis vector j (j < *dim) is basis[6*j ..
- *  6*j + 5]; the remaining entries are set to 0. Statuses of cyc_lie_span. */
+/** The orthogonal complement (for the form) of span(vectors): its
+ *  dimension *dim (6 minus the span's), its signature, and a
+ *  Euclidean-orthonormal basis in basis (36 doubles, may be NULL): basis
+ *  vector j (j < *dim) is basis[6 j] to basis[6 j + 5]; the remaining
+ *  entries are set to 0. Statuses of cyc_lie_span. */
 CYC_API int cyc_lie_complement(cyc_context* ctx, const double* vectors, int k, double basis[36],
                                int* dim, int signature[3]);
 /** The signature of the complement of any subspace with signature
