@@ -126,34 +126,17 @@ struct Json {
 
 // ---------------------------------------------------------------- vectors
 
-using V3 = double[3];
+// Grid points and normals are strided doubles: Eigen views them in place.
+using CMap3 = Eigen::Map<const Vec3d>;
 
-void sub(const double* a, const double* b, double* r) {
-  r[0] = a[0] - b[0];
-  r[1] = a[1] - b[1];
-  r[2] = a[2] - b[2];
-}
-void cross(const double* a, const double* b, double* r) {
-  r[0] = a[1] * b[2] - a[2] * b[1];
-  r[1] = a[2] * b[0] - a[0] * b[2];
-  r[2] = a[0] * b[1] - a[1] * b[0];
-}
-double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double dist2(const double* a, const double* b) {
-  V3 d;
-  sub(a, b, d);
-  return dot(d, d);
-}
-bool finite3(const double* a) {
-  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
-}
+double dist2(const double* a, const double* b) { return (CMap3(a) - CMap3(b)).squaredNorm(); }
+bool finite3(const double* a) { return CMap3(a).allFinite(); }
 // a / |a| into r; false when |a| is 0 or not finite.
-bool normalize(const double* a, double* r) {
-  const double n = std::sqrt(dot(a, a));
+bool normalize(const Vec3d& a, double* r) {
+  const double n = a.norm();
   if (!(n > 0) || !std::isfinite(n)) return false;
-  r[0] = a[0] / n;
-  r[1] = a[1] / n;
-  r[2] = a[2] / n;
+  Eigen::Map<Vec3d> out(r);
+  out = a / n;
   return true;
 }
 
@@ -235,9 +218,7 @@ class Mesh {
           }
         }
     }
-    V3 diag;
-    sub(bhi, blo, diag);
-    tol = o.weld_tolerance < 0 ? 1e-9 * std::sqrt(dot(diag, diag)) : o.weld_tolerance;
+    tol = o.weld_tolerance < 0 ? 1e-9 * (CMap3(bhi) - CMap3(blo)).norm() : o.weld_tolerance;
     // Winding and fallback normals.
     for (int k = 0; k < n; ++k)
       if (!orient(k)) return Status::invalid_argument;
@@ -370,7 +351,7 @@ class Mesh {
         if (end >= 0 && I.weld[end].grid >= 0) continue;
         const int jn = end >= 0 && I.collapsed[end] ? 1 : G.cols;
         for (int j = 0; j < jn; ++j) {
-          V3 nrm;
+          double nrm[3];
           normal(k, i, j, jn == 1, nrm);
           f(pt(k, i, j), nrm, k);
         }
@@ -384,13 +365,13 @@ class Mesh {
     if (G.normals) {
       const double* n =
           G.normals + (std::size_t(i) * std::size_t(G.cols) + std::size_t(j)) * G.stride;
-      if (finite3(n) && normalize(n, r)) {
+      if (finite3(n) && normalize(CMap3(n), r)) {
         if (info[k].flip)
           for (int c = 0; c < 3; ++c) r[c] = -r[c];
         return;
       }
     }
-    V3 s = {0, 0, 0};
+    Vec3d s = Vec3d::Zero();
     const int j0 = whole_row ? 0 : j - 1, j1 = whole_row ? G.cols - 1 : j;
     for (int ii = i - 1; ii <= i; ++ii) {
       if (ii < 0 || ii + 1 >= G.rows) continue;
@@ -401,9 +382,7 @@ class Mesh {
         } else if (jj < 0 || jj + 1 >= G.cols) {
           continue;
         }
-        V3 q;
-        quad_normal(k, ii, jc, q);
-        for (int c = 0; c < 3; ++c) s[c] += info[k].sign * q[c];
+        s += info[k].sign * quad_normal(k, ii, jc);
       }
     }
     if (!normalize(s, r))
@@ -447,29 +426,24 @@ class Mesh {
   }
 
   // (p11 - p00) x (p01 - p10) of cell (i, j) (j + 1 wraps).
-  void quad_normal(int k, int i, int j, double* q) const {
+  Vec3d quad_normal(int k, int i, int j) const {
     const int j1 = j + 1 == grids[k].cols ? 0 : j + 1;
-    V3 d1, d2;
-    sub(pt(k, i + 1, j1), pt(k, i, j), d1);
-    sub(pt(k, i, j1), pt(k, i + 1, j), d2);
-    cross(d1, d2, q);
+    return (CMap3(pt(k, i + 1, j1)) - CMap3(pt(k, i, j)))
+        .cross(CMap3(pt(k, i, j1)) - CMap3(pt(k, i + 1, j)));
   }
 
   bool orient(int k) {
     const GridMesh& G = grids[k];
     const int jcells = G.closed ? G.cols : G.cols - 1;
     double acc = 0, best = 0;
-    V3 bq = {0, 0, 0};
+    Vec3d bq = Vec3d::Zero();
     for (int i = 0; i + 1 < G.rows; ++i)
       for (int j = 0; j < jcells; ++j) {
-        V3 q;
-        quad_normal(k, i, j, q);
-        const double qq = dot(q, q);
+        const Vec3d q = quad_normal(k, i, j);
+        const double qq = q.squaredNorm();
         if (qq > best) {
           best = qq;
-          bq[0] = q[0];
-          bq[1] = q[1];
-          bq[2] = q[2];
+          bq = q;
         }
         if (G.normals) {
           const int j1 = j + 1 == G.cols ? 0 : j + 1;
@@ -478,13 +452,13 @@ class Mesh {
             const double* n =
                 G.normals + (std::size_t(ci[c]) * std::size_t(G.cols) + std::size_t(cj[c])) *
                                 G.stride;
-            if (finite3(n)) acc += dot(q, n);
+            if (finite3(n)) acc += q.dot(CMap3(n));
           }
         }
       }
     GridInfo& I = info[k];
     I.sign = acc < 0 ? -1 : 1;
-    V3 f;
+    double f[3];
     if (!(best > 0) || !normalize(bq, f)) return false;
     for (int c = 0; c < 3; ++c) I.fallback[c] = I.sign * f[c];
     return true;
@@ -621,16 +595,13 @@ void write_stl(const Mesh& m, const char* name, Out& out) {
     double F[3][3];
     for (int v = 0; v < 3; ++v)
       for (int c2 = 0; c2 < 3; ++c2) F[v][c2] = static_cast<double>(static_cast<float>(P[v][c2]));
-    V3 e1, e2, q, n;
-    sub(F[1], F[0], e1);
-    sub(F[2], F[0], e2);
-    cross(e1, e2, q);
-    if (!normalize(q, n)) {
+    const auto facet = [](const double* p0, const double* p1, const double* p2) {
+      return (CMap3(p1) - CMap3(p0)).cross(CMap3(p2) - CMap3(p0));
+    };
+    double n[3];
+    if (!normalize(facet(F[0], F[1], F[2]), n)) {
       // A facet of zero float area: the exact points' normal, else any unit.
-      sub(P[1], P[0], e1);
-      sub(P[2], P[0], e2);
-      cross(e1, e2, q);
-      if (!normalize(q, n)) {
+      if (!normalize(facet(P[0], P[1], P[2]), n)) {
         n[0] = 0;
         n[1] = 0;
         n[2] = 1;
