@@ -28,6 +28,11 @@ if(MODE STREQUAL "find_package")
   run(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer -B ${WORK_DIR} -G ${GENERATOR}
       -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_PREFIX_PATH=${PREFIX}
       -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+  file(STRINGS ${WORK_DIR}/CMakeCache.txt found REGEX "^cyclide_DIR:")
+  string(FIND "${found}" "${PREFIX}/" at)
+  if(NOT at GREATER -1)
+    message(FATAL_ERROR "ffi.c.find_package: found ${found}, not the package in ${PREFIX}")
+  endif()
   run(build ${CMAKE_COMMAND} --build ${WORK_DIR})
   # The imported target carries the installed library's path: CMake's build
   # RPATH points into PREFIX, nothing else is on the loader's path.
