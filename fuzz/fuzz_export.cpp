@@ -80,22 +80,18 @@ using fz::Input;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kCircleTol = 1e-6;  // points on their circle (as fuzz_eval)
 
-// KNOWN ISSUE (reported, not fixed here): cyc_tessellate_plan writes the
-// rows it planned into us[] before it fails (CYC_E_BUFFER_TOO_SMALL when
-// row_cap is reached, or a surface status at a row), although the header
-// says every output of §8j is written only on CYC_OK (the plan itself is
-// untouched). While set, the harness does not require us[] untouched on
-// those errors (it still requires it on validation errors and past
-// row_cap, which ASan also watches: us is exactly row_cap long).
-constexpr bool kKnownIssuePlanWritesUs = true;
+// Documented (SPEC §8j.4): us[0..row_cap) is the planner's working array,
+// unspecified after an error (CYC_E_BUFFER_TOO_SMALL when row_cap is
+// reached, a surface status at a row); the plan itself is untouched. So the
+// harness requires us[] untouched only on validation errors and past
+// row_cap (which ASan also watches: us is exactly row_cap long).
+constexpr bool kPlanUsesUsAsWork = true;
 
-// KNOWN ISSUE (reported, not fixed here): an export whose patches have
-// deg_u = 0 (a surface with one circle for every u, e.g. a ringed surface
-// of three constant points) is refused by cyc_bezier_export_nurbs with
-// CYC_E_INVALID_ARGUMENT ("an argument is out of its range") although the
-// handle is a valid export (SPEC §8j.1a lists no such case). While set, the
-// harness requires exactly that status for deg_u = 0 (so a fix shows).
-constexpr bool kKnownIssueNurbsDegreeZero = true;
+// Fixed: an export whose family has one circle for every u (m = 0, a
+// ringed surface of constant data) is written with deg_u = 1, so
+// cyc_bezier_export_nurbs assembles it (it used to refuse deg_u = 0 with
+// CYC_E_INVALID_ARGUMENT); corpus limit-nurbs-degree-zero.
+constexpr bool kKnownIssueNurbsDegreeZero = false;
 
 template <class T>
 void poison(T& x) {
@@ -933,7 +929,7 @@ void op_tessellate(State& st) {
   }
   if (r != CYC_OK) {
     FZ_CHECK(poisoned(plan), "plan written on error");
-    if (!kKnownIssuePlanWritesUs)
+    if (!kPlanUsesUsAsWork)
       FZ_CHECK(fz::all_sentinel(us.data(), us.size()), "us written on error");
     return;
   }

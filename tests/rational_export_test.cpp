@@ -699,6 +699,25 @@ TEST(RationalExport, LineElementAndPointInputs) {
   expect_exact(B, ExportDomain::rectangle(-0.5, 1, -1.5, 2.5), header_degree(B, -0.5, 1), 3, 64);
 }
 
+// A ringed surface (d, n, c) of constant data is one circle for every u
+// (m = 0; found by fuzz_export): written with deg_u = 1 (the row twice), so
+// the NURBS assembles too.
+TEST(RationalExport, ConstantFamilyIsWrittenWithDegreeOne) {
+  RationalCurve d, n, c;
+  ASSERT_EQ(make_point({0.5, 0, 0}, d), Status::ok);
+  ASSERT_EQ(make_point({0, 0.6, 0.8}, n), Status::ok);
+  ASSERT_EQ(make_point({1.5, 0, 0}, c), Status::ok);
+  Surface S;
+  ASSERT_EQ(make_ringed(d, n, c, nullptr, -1, 1, S), Status::ok);
+  int count = 0;
+  ASSERT_EQ(rational_bezier_patch_count(S, ExportDomain::circles(-1, 1), count), Status::ok);
+  std::vector<RationalBezierPatch> P(static_cast<std::size_t>(count));
+  ASSERT_EQ(export_rational_bezier(S, ExportDomain::circles(-1, 1), P.data(), count, count),
+            Status::ok);
+  for (const auto& p : P) EXPECT_EQ(p.deg_u, 1);
+  expect_nurbs(S, ExportDomain::circles(-1, 1));
+}
+
 TEST(RationalExport, DegreeTooHigh) {
   // m = 34 + 4 + 2 (55 + 15) = 178 > kMaxExportDegree with f of degree 15.
   double al[16] = {1}, be[16] = {}, ga[16] = {}, de[16] = {1};

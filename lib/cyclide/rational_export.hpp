@@ -79,7 +79,8 @@
 //        singular_point, is returned), the pole test the sign of X_h's
 //        weight at v = 1 (lambda(u) Q(u, 1), Q > 0).
 //
-// Degrees: deg_u = m <= kMaxExportDegree (else degree_too_high), deg_v = 2;
+// Degrees: deg_u = max(m, 1) <= kMaxExportDegree (else degree_too_high;
+// m = 0, one circle for every u, is written as degree 1), deg_v = 2;
 // dupin and parabolic: deg_u = 2 (E7)/(E8).
 // Patches: the v-pieces (at least one per part of [v0, v1] split at v = -1
 // and 1; a whole circle has at least 4) times the u-intervals (at least 1),

@@ -604,27 +604,32 @@ namespace {
 void build_patch(const ExportDomain& D, const Plan& L, int iu, int iv, int m,
                  const Real (&r)[3][4][kCap + 1], RationalBezierPatch& P) {
   const VPiece& p = L.v[iv];
-  P.deg_u = m;
+  // A family with one circle for every u (m = 0, e.g. a ringed surface of
+  // constant data) is written with degree 1 (the row twice): a NURBS needs
+  // degree >= 1 in u.
+  const int mu = std::max(m, 1);
+  P.deg_u = mu;
   P.deg_v = 2;
   P.u0 = D.u0 + L.ua[iu] * (D.u1 - D.u0);
   P.u1 = iu == L.nu - 1 ? D.u1 : D.u0 + L.ub[iu] * (D.u1 - D.u0);
   P.v0 = p.v0;
   P.v1 = p.v1;
   P.reciprocal_v = p.rec;
-  for (int i = 0; i <= m; ++i)
+  for (int i = 0; i <= mu; ++i)
     for (int c = 0; c < 4; ++c) {
+      const int ri = std::min(i, m);
       Real v[3];
-      v_controls(p, r[0][c][i], r[1][c][i], r[2][c][i], v);
+      v_controls(p, r[0][c][ri], r[1][c][ri], r[2][c][ri], v);
       for (int j = 0; j < 3; ++j) P.cp[3 * i + j][c] = double(v[j]);
     }
   // Positive weights (plan checked they share one sign), the largest in
   // [0.5, 1) (scaled by a power of two: exact).
   const double sign = P.cp[0][0] > 0 ? 1.0 : -1.0;
   double big = 0.0;
-  for (int i = 0; i < 3 * (m + 1); ++i) big = std::max(big, std::abs(P.cp[i][0]));
+  for (int i = 0; i < 3 * (mu + 1); ++i) big = std::max(big, std::abs(P.cp[i][0]));
   int e = 0;
   std::frexp(big, &e);
-  for (int i = 0; i < 3 * (m + 1); ++i)
+  for (int i = 0; i < 3 * (mu + 1); ++i)
     for (int c = 0; c < 4; ++c) P.cp[i][c] = sign * std::ldexp(P.cp[i][c], -e);
 }
 

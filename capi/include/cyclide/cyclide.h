@@ -2039,7 +2039,10 @@ CYC_API size_t cyc_tessellation_workspace_size(int segments);
  *  or more than row_cap >= 2 circles are needed (the planner stops there,
  *  so its work is bounded by row_cap). CYC_E_INVALID_ARGUMENT (options out of range, a
  *  reference along an end circle's axis), CYC_E_NOT_FINITE, and the
- *  surface's statuses at a circle. Allocation-free. */
+ *  surface's statuses at a circle. us[0..row_cap) is also the planner's
+ *  working array: after an error other than an argument check its
+ *  contents are unspecified (*plan is written only on success).
+ *  Allocation-free. */
 CYC_API int cyc_tessellate_plan(cyc_context* ctx, const cyc_surface* surface,
                                 const cyc_tessellation_options* options, double* us, int row_cap,
                                 void* work, size_t work_bytes, cyc_tessellation_plan* plan);
