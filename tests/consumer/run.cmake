@@ -8,6 +8,7 @@
 #   GENERATOR   the CMake generator of the consumer projects
 #   C_COMPILER  the C compiler
 #   BUILD_TYPE  add_subdirectory: the consumer's CMAKE_BUILD_TYPE
+#   DEBUG_FLAGS add_subdirectory: CMAKE_{C,CXX}_FLAGS_DEBUG (with BUILD_TYPE Debug)
 #   CXX_COMPILER, WITH_CERES  add_subdirectory: the C++ compiler, CYCLIDE_WITH_CERES
 # Fails (FATAL_ERROR) when a step fails; prints the consumer's report.
 cmake_minimum_required(VERSION 3.20)
@@ -43,6 +44,7 @@ elseif(MODE STREQUAL "add_subdirectory")
   run(configure ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/ffi/add_subdirectory -B ${WORK_DIR}
       -G ${GENERATOR} -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
       -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCYCLIDE_WITH_CERES=${WITH_CERES}
+      "-DCMAKE_CXX_FLAGS_DEBUG=${DEBUG_FLAGS}" "-DCMAKE_C_FLAGS_DEBUG=${DEBUG_FLAGS}"
       -DCYCLIDE_SOURCE_DIR=${SOURCE_DIR})
   run(build ${CMAKE_COMMAND} --build ${WORK_DIR} --target consumer_add_subdirectory)
   run(run ${WORK_DIR}/consumer_add_subdirectory)
