@@ -6,7 +6,11 @@
 // fuzzed reference and e); single skins and chains of n = -1..6 ends; then
 // evaluation, grids, twist, lambda and info with fuzzed patch, theta and t,
 // NULL pointers, a NULL context, destruction in a fuzzed order and a
-// tracking allocator that can fail the n-th allocation.
+// tracking allocator that can fail the n-th allocation; rarely a static
+// context (cyc_context_init_static, SPEC 2a) in a fuzzed block with the
+// tracker or nothing as its fallback. Issue 9: the skins' rational Bezier
+// export (op_export) and their adaptive tessellation (op_tessellate), with
+// the oracles written above those functions.
 //
 // Oracles:
 //  - every status is known, never CYC_E_INTERNAL; last status/message and
@@ -46,6 +50,7 @@ using fz::Input;
 
 cyc_sphere_skin* const kSentinel = reinterpret_cast<cyc_sphere_skin*>(uintptr_t(0x5eed0bad0000ull));
 constexpr int kBadSentinel = -777;
+constexpr double kPi = 3.14159265358979323846;
 
 struct Skin {
   cyc_sphere_skin* h = nullptr;
@@ -372,7 +377,7 @@ void op_tangents(State& st) {
   if (!st.spend(2)) return;
   cyc_skin_end out[2];
   cyc_skin_tangent_summary sum;
-  fz::fill_sentinel(reinterpret_cast<double*>(out), sizeof out / sizeof(double));
+  fz::fill_sentinel(reinterpret_cast<double*>(out), sizeof out / (sizeof(double)));
   std::memset(&sum, 0xA5, sizeof sum);
   const cyc_skin_tangent_summary blank = sum;
   const int s = cyc_optimize_skin_tangents(st.ctx, &a.e, &b.e, o.null ? nullptr : &o.o,
@@ -392,7 +397,7 @@ void op_tangents(State& st) {
              cyc_status_name(s));
   }
   if (s != CYC_OK) {
-    FZ_CHECK(fz::all_sentinel(reinterpret_cast<double*>(out), sizeof out / sizeof(double)) &&
+    FZ_CHECK(fz::all_sentinel(reinterpret_cast<double*>(out), sizeof out / (sizeof(double))) &&
                  std::memcmp(&sum, &blank, sizeof sum) == 0,
              "tangents wrote on error");
     return;
@@ -774,6 +779,188 @@ void op_info(State& st) {
            "info: the spine does not start at the start end");
 }
 
+// cyc_sphere_skin_export_create (issue 9, SPEC 8j.1b): fuzzed domain (u in
+// [0, count] mostly, v whole or a rectangle in tan(theta/2), bad bounds
+// rarely) and options (NULL, tolerance 1e-9..1e-3 of the scale, 0, NaN,
+// 1e-19; degree 1..24 or out of range). Oracles: the validation statuses
+// in their order (NULL, options, non-finite, domain), *out and the report
+// untouched on error; on OK positive weights, finite report with
+// error_estimate <= 2 tolerance (+ rounding), and for moderate skins the
+// patches at a fuzzed (s, t) within 2 tolerance of cyc_sphere_skin_eval at
+// their own (u = patch + t, theta = 2 atan v).
+void op_export(State& st) {
+  Input& in = st.in;
+  Skin* k = pick(st);
+  const int count = k ? k->count : 1;
+  cyc_export_domain D{0.0, double(count), 0.0, 0.0, 1};
+  switch (in.range(0, 5)) {
+    case 0: break;
+    case 1: D.u0 = in.range(0, 8) / 8.0 * count; D.u1 = D.u0 + in.range(1, 8) / 8.0 * (count - D.u0); break;
+    case 2: D.whole_circle = 0; D.v0 = in.range(-16, 15) / 4.0; D.v1 = D.v0 + in.range(1, 16) / 4.0; break;
+    case 3: D.u1 = count + in.range(0, 2) * 0.5; D.u0 = in.flag() ? -0.5 : D.u1; break;  // bad or empty
+    case 4: D.u0 = in.flag() ? NAN : HUGE_VAL; break;
+    default: D.whole_circle = 0; D.v0 = in.moderate(); D.v1 = in.moderate(); break;
+  }
+  cyc_skin_export_options o;
+  cyc_skin_export_options_default(&o);
+  const bool null_options = in.rarely();
+  const double scale = k ? scale_of(*k, 0) : 1.0;
+  switch (in.range(0, 7)) {
+    case 0: case 1: break;
+    case 2: o.tolerance = scale * std::pow(10.0, -double(in.range(3, 9))); break;
+    case 3: o.tolerance = 0.0; break;
+    case 4: o.tolerance = NAN; break;
+    case 5: o.tolerance = 1e-19; break;
+    default: o.tolerance = 1e-6 * scale; break;
+  }
+  if (in.flag()) o.degree = in.rarely() ? in.range(-2, 30) : in.range(1, 12);
+  const bool null_out = in.rarely();
+  if (k && !st.spend(1)) return;
+  cyc_bezier_export* const kNoExport = reinterpret_cast<cyc_bezier_export*>(uintptr_t(0x5eed0e0));
+  cyc_bezier_export* e = kNoExport;
+  cyc_skin_export_report r;
+  std::memset(&r, 0x5a, sizeof r);
+  const cyc_skin_export_report keep = r;
+  const int s = cyc_sphere_skin_export_create(st.ctx, k ? k->h : nullptr, &D,
+                                              null_options ? nullptr : &o,
+                                              null_out ? nullptr : &e, &r);
+  st.check("cyc_sphere_skin_export_create", s);
+  const cyc_skin_export_options& used = null_options ? cyc_skin_export_options{1e-9, 7} : o;
+  const bool bad_options = !(used.tolerance > 0) || !std::isfinite(used.tolerance) ||
+                           used.degree < 1 || used.degree > 24;
+  const bool nonfinite = !std::isfinite(D.u0) || !std::isfinite(D.u1) ||
+                         (!D.whole_circle && (!std::isfinite(D.v0) || !std::isfinite(D.v1)));
+  const bool bad_domain = !(D.u0 >= 0 && D.u0 < D.u1 && D.u1 <= count) ||
+                          (!D.whole_circle && !(D.v0 < D.v1));
+  int want = CYC_OK;
+  if (!k || null_out) want = CYC_E_NULL_ARGUMENT;
+  else if (bad_options) want = CYC_E_INVALID_ARGUMENT;
+  else if (nonfinite) want = CYC_E_NOT_FINITE;
+  else if (bad_domain) want = CYC_E_BAD_DOMAIN;
+  if (want != CYC_OK)
+    FZ_CHECK(s == want, "skin export: %s, expected %s", cyc_status_name(s), cyc_status_name(want));
+  else
+    FZ_CHECK(s == CYC_OK || s == CYC_E_NUMERICAL_OVERFLOW || s == CYC_E_OUT_OF_MEMORY ||
+                 s == CYC_E_INVALID_ARGUMENT,
+             "skin export: undocumented %s", cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(e == kNoExport && same_bits(&r, &keep, sizeof r), "skin export wrote on error");
+    return;
+  }
+  const int n = cyc_bezier_export_count(e);
+  FZ_CHECK(n >= 1 && n <= CYC_MAX_EXPORT_PATCHES, "skin export: %d patches", n);
+  FZ_CHECK(std::isfinite(r.error_estimate) && r.error_estimate >= 0 && std::isfinite(r.rmf_error) &&
+               r.t_intervals >= 1 && (r.exact == 0 || r.exact == 1),
+           "skin export: report");
+  FZ_CHECK(r.error_estimate <= 2 * used.tolerance * (1 + 1e-9) + 1e-11 * scale,
+           "skin export: error %g, tolerance %g", r.error_estimate, used.tolerance);
+  const int idx = in.range(0, 1 << 12) % n;
+  cyc_bezier_patch_info info;
+  std::vector<double> cp(4 * 30 * 5);
+  const int sp = cyc_bezier_export_patch(st.ctx, e, idx, &info, cp.data(), cp.size());
+  st.check("cyc_bezier_export_patch", sp);
+  FZ_CHECK(sp == CYC_OK && info.deg_u == used.degree + 3 && info.deg_v == 4, "skin patch %d: %s",
+           idx, cyc_status_name(sp));
+  for (int i = 0; i < (info.deg_u + 1) * 5; ++i)
+    FZ_CHECK(cp[size_t(4 * i)] > 0 && std::isfinite(cp[size_t(4 * i)]), "skin patch weight %g",
+             cp[size_t(4 * i)]);
+  const double ps = in.range(0, 16) / 16.0, pt = in.range(0, 16) / 16.0;
+  double x[3], uv[2];
+  const int se = cyc_bezier_export_eval(st.ctx, e, idx, ps, pt, x, uv);
+  st.check("cyc_bezier_export_eval", se);
+  FZ_CHECK(se == CYC_OK && fz::finite3(x), "skin patch eval: %s", cyc_status_name(se));
+  if (k->moderate) {
+    const int patch = std::min(k->count - 1, std::max(0, int(std::floor(uv[0]))));
+    const double t = std::min(1.0, std::max(0.0, uv[0] - patch));
+    double y[3];
+    const int sy =
+        cyc_sphere_skin_eval(st.ctx, k->h, patch, 2 * std::atan(uv[1]), t, y, nullptr, nullptr,
+                             nullptr);
+    st.check("cyc_sphere_skin_eval", sy);
+    if (sy == CYC_OK) {
+      const double d[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+      FZ_CHECK(fz::norm3(d) <= 2 * used.tolerance + 1e-9 * scale,
+               "skin export off the skin by %g (tolerance %g)", fz::norm3(d), used.tolerance);
+    }
+  }
+  cyc_bezier_export_destroy(e);
+}
+
+// cyc_sphere_skin_tessellate_plan/_eval (issue 9, SPEC 8j.2a): tolerance
+// 1e-1..1e-3 of the scale (or bad), segments <= 256, row_cap <= 512.
+// Oracles: statuses, *plan untouched on error; on OK ts strictly increasing
+// from 0 to 1, rows and segments within the options, finite points equal
+// (to 1e-12 of the scale) to cyc_sphere_skin_eval at (2 pi j / N, ts[i])
+// with the default phase 0, unit or zero normals.
+void op_tessellate(State& st) {
+  Input& in = st.in;
+  Skin* k = pick(st);
+  const int patch = in.rarely() ? patch_of(in) : in.range(0, 5);
+  cyc_tessellation_options o;
+  cyc_tessellation_options_default(&o);
+  const double scale = k ? scale_of(*k, 0) : 1.0;
+  o.chordal_tolerance = scale * std::pow(10.0, -double(in.range(1, 3)));
+  o.max_segments = in.range(8, 256);
+  o.min_segments = in.range(3, 8);
+  if (in.rarely()) o.fixed_segments = in.range(3, 64);
+  if (in.rarely()) o.chordal_tolerance = in.flag() ? 0.0 : NAN;
+  const int row_cap = in.range(2, 512);
+  std::vector<double> ts(static_cast<size_t>(row_cap));
+  const size_t wb = cyc_sphere_skin_tessellation_workspace_size(
+      o.fixed_segments > 0 ? o.fixed_segments : o.max_segments);
+  std::vector<double> work(wb / sizeof(double) + 1);
+  if (k && !st.spend(1)) return;
+  cyc_tessellation_plan plan;
+  std::memset(&plan, 0x5a, sizeof plan);
+  const cyc_tessellation_plan keep = plan;
+  const int s = cyc_sphere_skin_tessellate_plan(st.ctx, k ? k->h : nullptr, patch, &o, ts.data(),
+                                                row_cap, work.data(), wb, &plan);
+  st.check("cyc_sphere_skin_tessellate_plan", s);
+  if (!k) FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "skin plan without a skin: %s", cyc_status_name(s));
+  FZ_CHECK(s == CYC_OK || s == CYC_E_NULL_ARGUMENT || s == CYC_E_INVALID_ARGUMENT ||
+               s == CYC_E_NOT_FINITE || s == CYC_E_BUFFER_TOO_SMALL ||
+               s == CYC_E_NUMERICAL_OVERFLOW || s == CYC_E_SINGULAR_POINT,
+           "skin plan: undocumented %s", cyc_status_name(s));
+  if (s != CYC_OK) {
+    FZ_CHECK(same_bits(&plan, &keep, sizeof plan), "skin plan written on error");
+    return;
+  }
+  FZ_CHECK(plan.rows >= 2 && plan.rows <= row_cap && plan.segments >= 3 &&
+               plan.segments <= (o.fixed_segments > 0 ? o.fixed_segments : o.max_segments),
+           "skin plan: %d rows x %d", plan.rows, plan.segments);
+  FZ_CHECK(ts[0] == 0.0 && ts[size_t(plan.rows - 1)] == 1.0, "skin plan: ends %g %g", ts[0],
+           ts[size_t(plan.rows - 1)]);
+  for (int i = 1; i < plan.rows; ++i)
+    FZ_CHECK(ts[size_t(i)] > ts[size_t(i - 1)], "skin plan: ts not increasing at %d", i);
+  const size_t npts = size_t(plan.rows) * size_t(plan.segments);
+  if (npts > (1u << 16)) return;
+  std::vector<double> P(3 * npts), N(3 * npts);
+  size_t singular = 0;
+  const int se = cyc_sphere_skin_tessellate_eval(st.ctx, k->h, patch, &plan, ts.data(),
+                                                 {P.data(), npts, 3}, {N.data(), npts, 3},
+                                                 &singular);
+  st.check("cyc_sphere_skin_tessellate_eval", se);
+  FZ_CHECK(se == CYC_OK || se == CYC_E_NUMERICAL_OVERFLOW, "skin mesh: %s", cyc_status_name(se));
+  if (se != CYC_OK) return;
+  for (size_t q = 0; q < npts; ++q) {
+    FZ_CHECK(fz::finite3(&P[3 * q]), "skin mesh: non-finite point %zu", q);
+    const double l = fz::norm3(&N[3 * q]);
+    FZ_CHECK(l == 0.0 || std::abs(l - 1.0) <= 1e-9, "skin mesh: normal length %g", l);
+  }
+  if (plan.phase0 == 0.0 && plan.phase1 == 0.0) {
+    const int i = in.range(0, plan.rows - 1), j = in.range(0, plan.segments - 1);
+    double y[3];
+    const int sy = cyc_sphere_skin_eval(st.ctx, k->h, patch, 2 * kPi * j / plan.segments,
+                                        ts[size_t(i)], y, nullptr, nullptr, nullptr);
+    st.check("cyc_sphere_skin_eval", sy);
+    const double* x = &P[3 * (size_t(i) * size_t(plan.segments) + size_t(j))];
+    const double d[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+    if (sy == CYC_OK)
+      FZ_CHECK(fz::norm3(d) <= 1e-12 * scale + 1e-12 * fz::norm3(y),
+               "skin mesh point (%d, %d) off s(theta_j, t_i) by %g", i, j, fz::norm3(d));
+  }
+}
+
 void op_destroy(State& st) {
   const int i = st.in.range(0, 7);
   if (st.skins.empty()) return;
@@ -824,7 +1011,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   cyc_allocator a = tracker.allocator();
   State st(in);
-  const int sc = cyc_context_create(alloc_mode ? &a : nullptr, &st.ctx);
+  // Rarely a static context (SPEC 2a): handles carved from a block, the
+  // tracker as its fallback (or none).
+  const bool in_block = in.rarely();
+  std::vector<unsigned char> block(in_block ? (size_t(in.range(0, 1 << 8)) << 12) + 64 : 0);
+  const int sc = in_block ? cyc_context_init_static(block.data(), block.size(),
+                                                    alloc_mode ? &a : nullptr, &st.ctx)
+                          : cyc_context_create(alloc_mode ? &a : nullptr, &st.ctx);
+  if (in_block && sc == CYC_E_BUFFER_TOO_SMALL) {
+    FZ_CHECK(block.size() < cyc_context_static_size(), "static context refused %zu bytes",
+             block.size());
+    return 0;
+  }
   FZ_CHECK(sc == CYC_OK || (alloc_mode == 2 && sc == CYC_E_OUT_OF_MEMORY), "context: %s",
            cyc_status_name(sc));
   if (sc != CYC_OK) {
@@ -848,7 +1046,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 5: op_lambda(st); break;
       case 6: op_info(st); break;
       case 7: op_destroy(st); break;
-      default: op_nulls(st);
+      default:
+        switch (in.range(0, 2)) {
+          case 0: op_export(st); break;
+          case 1: op_tessellate(st); break;
+          default: op_nulls(st);
+        }
     }
   }
   // Tear down in a fuzzed order: handles may outlive their context.
