@@ -27,6 +27,7 @@
 // quintic Hermite interpolation of W1, W1', W1''. Allocation-free.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 #include "cyclide/status.hpp"
@@ -221,6 +222,15 @@ double skin_lambda(const SphereSkin& S, double theta, double t, double* a = null
 // addition theorem (L[a][k] the coefficient of t^k, a = 0, c, s), and V1,
 // V2 the directions w(t; 0), w(t; pi/2) (W1, W2 turned by delta s(t)).
 void skin_lambda_polynomials(const SphereSkin& S, double (&L)[3][4]);
+// One of those cubics at t (Horner).
+inline double skin_cubic_at(const double (&c)[4], double t) {
+  return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+// max over theta of |lambda(t; theta)| = |L0| + hypot(Lc, Ls).
+inline double skin_lambda_max(const double (&L)[3][4], double t) {
+  return std::abs(skin_cubic_at(L[0], t)) +
+         std::hypot(skin_cubic_at(L[1], t), skin_cubic_at(L[2], t));
+}
 // V1(t), V2(t) (t in [0, 1], not checked).
 void skin_directions(const SphereSkin& S, double t, Vec3d& V1, Vec3d& V2);
 

@@ -69,6 +69,9 @@ struct TessellationPlan {
   bool depth_limited = false;  // some interval hit kMaxTessellationDepth
 };
 
+// Whether the options are in range (both planners' invalid_argument).
+bool tessellation_options_valid(const TessellationOptions& o) noexcept;
+
 // Doubles of scratch the planner needs for N arcs per circle.
 std::size_t tessellation_workspace_size(int segments) noexcept;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cyclide/exact.hpp"
+#include "export_pieces.hpp"
 
 namespace cyclide {
 inline namespace v0 {
@@ -389,10 +390,7 @@ Status build(const Surface& S, double ua, double ub, Data& X) {
 
 // A v-piece (E5): the circle parameter x = v (or w = 1/v if rec) runs
 // linearly from x0 to x1 while v runs from v0 to v1 (increasing).
-struct VPiece {
-  bool rec = false;
-  double x0 = 0, x1 = 0, v0 = 0, v1 = 0;
-};
+using detail::VPiece;
 
 // (E5): the piece is an arc of less than 120 degrees of the circle at every
 // sampled u: cos(arc/2) = <q(x0), q(x1)> / (|q(x0)| |q(x1)|) > 1/2.
@@ -452,15 +450,8 @@ int initial_pieces(const ExportDomain& D, VPiece (&p)[3]) {
   return n;
 }
 
-// The degree-2 v-coefficients (E5) of one u-coefficient: x0, x1, x2 the
-// coefficients of v^0, v^1, v^2.
-void v_controls(const VPiece& p, Real x0, Real x1, Real x2, Real (&c)[3]) {
-  if (p.rec) std::swap(x0, x2);  // X_h w^2 = X2 + X1 w + X0 w^2
-  const Real a = p.x0, b = p.x1;
-  c[0] = x0 + (x1 + x2 * a) * a;
-  c[1] = x0 + x1 * 0.5 * (a + b) + x2 * a * b;  // the blossom
-  c[2] = x0 + (x1 + x2 * b) * b;
-}
+// The degree-2 v-coefficients (E5) of one u-coefficient (export_pieces.hpp).
+using detail::v_controls;
 
 // True if, on the u-interval [a, b] (local), every v-piece has weights of
 // one strict sign (made positive when the patch is written).

@@ -2,6 +2,8 @@
 // skin_export.hpp.
 #include "cyclide/skin_export.hpp"
 
+#include "export_pieces.hpp"
+
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -93,13 +95,6 @@ void fit_frame(const SphereSkin& S, const Interpolator& I, double ta, double tb,
   }
 }
 
-double horner(const double (&c)[4], double t) { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); }
-
-// |L0| + hypot(Lc, Ls): the largest |lambda(t; theta)| over theta.
-double lambda_bound(const double (&L)[3][4], double t) {
-  return std::abs(horner(L[0], t)) + std::hypot(horner(L[1], t), horner(L[2], t));
-}
-
 // (K4): the sampled bound of the interval, and the largest |lambda| seen.
 double fit_error(const SphereSkin& S, const double (&L)[3][4], const Interpolator& I, double ta,
                  double tb, const FrameFit& F, double& lambda_max) {
@@ -118,7 +113,7 @@ double fit_error(const SphereSkin& S, const double (&L)[3][4], const Interpolato
         for (int j = 0; j <= q; ++j) y += B[j] * F.V[b][j];
         d2 += (V[b] - y).squaredNorm();
       }
-      const double lam = lambda_bound(L, t);
+      const double lam = skin_lambda_max(L, t);
       lambda_max = std::max(lambda_max, lam);
       err = std::max(err, lam * std::sqrt(d2));
     }
@@ -126,11 +121,8 @@ double fit_error(const SphereSkin& S, const double (&L)[3][4], const Interpolato
   return err;
 }
 
-// (K2): a v-piece, v in [v0, v1], in x = v or (rec) x = 1/v over [x0, x1].
-struct VPiece {
-  bool rec;
-  double x0, x1, v0, v1;
-};
+// (K2): the v-pieces (export_pieces.hpp).
+using detail::VPiece;
 
 int v_pieces(const ExportDomain& D, VPiece (&p)[4]) {
   if (D.whole_circle) {
@@ -152,16 +144,6 @@ int v_pieces(const ExportDomain& D, VPiece (&p)[4]) {
     p[n++] = rec ? VPiece{true, 1.0 / a, 1.0 / b, a, b} : VPiece{false, a, b, a, b};
   }
   return n;
-}
-
-// Bernstein coefficients on the piece of the quadratic c0 + c1 v + c2 v^2
-// (times w^2 = 1/v^2 on a reciprocal piece).
-void quadratic_on(const VPiece& p, double c0, double c1, double c2, double (&b)[3]) {
-  if (p.rec) std::swap(c0, c2);
-  const double a = p.x0, e = p.x1;
-  b[0] = c0 + (c1 + c2 * a) * a;
-  b[1] = c0 + c1 * 0.5 * (a + e) + c2 * a * e;  // the blossom
-  b[2] = c0 + (c1 + c2 * e) * e;
 }
 
 bool straight_spine(const SkinSpine& a) {
@@ -261,9 +243,9 @@ void build_patch(const SphereSkin& S, const Interval& J, const FrameFit& F, int 
     }
   // v: omega, C, S and their products (degree 4).
   double T[3][3];
-  quadratic_on(p, 1.0, 0.0, 1.0, T[0]);   // omega = 1 + v^2
-  quadratic_on(p, 1.0, 0.0, -1.0, T[1]);  // C = 1 - v^2
-  quadratic_on(p, 0.0, 2.0, 0.0, T[2]);   // S = 2 v
+  detail::v_controls<double>(p, 1.0, 0.0, 1.0, T[0]);   // omega = 1 + v^2
+  detail::v_controls<double>(p, 1.0, 0.0, -1.0, T[1]);  // C = 1 - v^2
+  detail::v_controls<double>(p, 0.0, 2.0, 0.0, T[2]);   // S = 2 v
   double TT[3][2][5], ww[5];
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 2; ++b) bernstein_product(T[a], 2, T[1 + b], 2, TT[a][b]);

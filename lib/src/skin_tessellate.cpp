@@ -14,16 +14,6 @@ constexpr int kLambdaSamples = 65;  // t samples of lambda_max and the pre-check
 constexpr int kRowBuffers = 3 + 2 * (kMaxTessellationDepth + 1);
 constexpr int kBlock = 64;          // angles per skin_eval_grid call in the mesh
 
-double poly3(const double* c, double t) { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); }
-
-bool options_ok(const TessellationOptions& o) {
-  return std::isfinite(o.chordal_tolerance) && o.chordal_tolerance > 0 && o.min_segments >= 3 &&
-         o.max_segments >= o.min_segments && o.max_segments <= kMaxCircleSegments &&
-         o.fixed_segments >= 0 && o.fixed_segments <= kMaxCircleSegments &&
-         (o.fixed_segments == 0 || o.fixed_segments >= 3) && o.initial_rows >= 2 &&
-         o.initial_rows <= 1 << 16;
-}
-
 double phase_at(const TessellationPlan& plan, double t) {
   return plan.phase0 + (plan.phase1 - plan.phase0) * t;
 }
@@ -74,7 +64,7 @@ struct Planner {
     const Vec3d a = S.spine.point(t);
     Vec3d V1, V2;
     skin_directions(S, t, V1, V2);
-    const double l0 = poly3(L[0], t), lc = poly3(L[1], t), ls = poly3(L[2], t);
+    const double l0 = skin_cubic_at(L[0], t), lc = skin_cubic_at(L[1], t), ls = skin_cubic_at(L[2], t);
     const double ph = phase_at(plan, t), cp = std::cos(ph), sp = std::sin(ph);
     for (int k = 0; k < m; ++k) {
       const double c = cp * cb[k] - sp * sb[k], s = sp * cb[k] + cp * sb[k];
@@ -213,7 +203,7 @@ std::size_t skin_tessellation_workspace_size(int segments) noexcept {
 Status skin_tessellation_plan(const SphereSkin& S, const TessellationOptions& options, double* ts,
                               int row_cap, double* work, std::size_t work_len,
                               TessellationPlan& plan, SkinTessellationReport* report) noexcept {
-  if (!options_ok(options) || row_cap < 0) return Status::invalid_argument;
+  if (!tessellation_options_valid(options) || row_cap < 0) return Status::invalid_argument;
   if (ts == nullptr && row_cap > 0) return Status::null_argument;
   const int n_max = options.fixed_segments > 0 ? options.fixed_segments : options.max_segments;
   if (work == nullptr || work_len < skin_tessellation_workspace_size(n_max))
@@ -224,7 +214,7 @@ Status skin_tessellation_plan(const SphereSkin& S, const TessellationOptions& op
   skin_lambda_polynomials(S, L);
   for (int k = 0; k < kLambdaSamples; ++k) {
     const double t = double(k) / (kLambdaSamples - 1);
-    const double lam = std::abs(poly3(L[0], t)) + std::hypot(poly3(L[1], t), poly3(L[2], t));
+    const double lam = skin_lambda_max(L, t);
     if (!std::isfinite(lam)) return Status::numerical_overflow;
     P.max_radius = std::max(P.max_radius, lam);
   }

@@ -152,15 +152,15 @@ struct Planner {
   }
 };
 
-bool options_ok(const TessellationOptions& o) {
+}  // namespace
+
+bool tessellation_options_valid(const TessellationOptions& o) noexcept {
   return std::isfinite(o.chordal_tolerance) && o.chordal_tolerance > 0 && o.min_segments >= 3 &&
          o.max_segments >= o.min_segments && o.max_segments <= kMaxCircleSegments &&
          o.fixed_segments >= 0 && o.fixed_segments <= kMaxCircleSegments &&
          (o.fixed_segments == 0 || o.fixed_segments >= 3) && o.initial_rows >= 2 &&
          o.initial_rows <= 1 << 16;
 }
-
-}  // namespace
 
 std::size_t tessellation_workspace_size(int segments) noexcept {
   if (segments < 3 || segments > kMaxCircleSegments) return 0;
@@ -179,7 +179,7 @@ Status circle_parameter_at_angle(const Surface& s, double u, double theta, doubl
 Status tessellation_plan(const Surface& s, const TessellationOptions& options, double* us,
                          int row_cap, double* work, std::size_t work_len,
                          TessellationPlan& plan) noexcept {
-  if (!options_ok(options) || row_cap < 0) return Status::invalid_argument;
+  if (!tessellation_options_valid(options) || row_cap < 0) return Status::invalid_argument;
   if (us == nullptr && row_cap > 0) return Status::null_argument;
   TessellationPlan P;
   // N from the largest radius at the domain samples: the sagitta of an arc
