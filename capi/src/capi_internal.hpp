@@ -256,24 +256,36 @@ inline int succeed(cyc_context* ctx) {
   return CYC_OK;
 }
 
-// The one guard every entry point runs through.
+// Record a failure in the context: its status and message.
+inline void record(cyc_context* ctx, const Outcome& o) {
+  ctx->last_status = o.status;
+  std::memcpy(ctx->message, o.text, std::strlen(o.text) + 1);
+}
+
+// The one guard every entry point runs through. It is re-entrant: the
+// error handler may call the library on the same context; the handler gets
+// the call's own message (a copy, stable while the handler runs), and
+// afterwards the context holds, and the call returns, the call's own
+// status and message, whatever the handler's calls did.
 template <class Body>
 int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
   if (!ctx) return CYC_E_NULL_ARGUMENT;
-  try {
-    const Outcome o = body();
-    if (o.status == CYC_OK) return succeed(ctx);
-    ctx->last_status = o.status;
-    std::memcpy(ctx->message, o.text, std::strlen(o.text) + 1);
-  } catch (const std::bad_alloc&) {
-    ctx->last_status = CYC_E_OUT_OF_MEMORY;
-    std::snprintf(ctx->message, sizeof ctx->message, "%s: out of memory", fn);
-  } catch (...) {
-    ctx->last_status = CYC_E_INTERNAL;
-    std::snprintf(ctx->message, sizeof ctx->message, "%s: unexpected exception", fn);
+  const Outcome o = [&]() noexcept -> Outcome {  // no copy of the 1 KiB text
+    try {
+      return body();
+    } catch (const std::bad_alloc&) {
+      return fail(CYC_E_OUT_OF_MEMORY, "%s: out of memory", fn);
+    } catch (...) {
+      return fail(CYC_E_INTERNAL, "%s: unexpected exception", fn);
+    }
+  }();
+  if (o.status == CYC_OK) return succeed(ctx);
+  record(ctx, o);
+  if (const cyc_error_handler handler = ctx->handler) {
+    handler(o.status, o.text, ctx->handler_userdata);
+    record(ctx, o);  // the handler's own calls may have replaced it
   }
-  if (ctx->handler) ctx->handler(ctx->last_status, ctx->message, ctx->handler_userdata);
-  return ctx->last_status;
+  return o.status;
 }
 
 #define REQUIRE(ptr)                                                    \
@@ -281,10 +293,72 @@ int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
     if (!(ptr)) return fail(CYC_E_NULL_ARGUMENT, "%s: %s is NULL", fn, #ptr); \
   } while (0)
 
-// NaN, Inf or beyond the core's input range (kMaxInputMagnitude = 1e100):
-// the C layer's check of a double before it reaches the core, so its
-// message can name the value.
+// Return the outcome of a check if it failed.
+#define TRY(expr)                                  \
+  do {                                             \
+    if (Outcome o_ = (expr); o_.status) return o_; \
+  } while (0)
+
+// ------------------------------------------------------------ inputs
+//
+// The one validation path for what a caller passes. Every double input
+// (argument, array entry or struct field) is checked here before the core
+// sees it: NaN, infinite or beyond the input range |x| <= 1e100
+// (kMaxInputMagnitude) is CYC_E_NOT_FINITE with a message naming the
+// argument, its index or field and the value. Counts, sizes and degrees are
+// compared with their bounds before any arithmetic is done on them, so no
+// check can overflow.
+
+// NaN, Inf or beyond the core's input range.
 inline bool beyond_input_range(double x) { return !(std::abs(x) <= kMaxInputMagnitude); }
+
+inline const char* what_is_wrong(double x) {
+  if (std::isnan(x)) return "is NaN";
+  if (std::isinf(x)) return "is infinite";
+  return "is beyond the input range |x| <= 1e100";
+}
+
+// A double argument or struct field, e.g. check_double(fn, "options.tolerance", t).
+inline Outcome check_double(const char* fn, const char* name, double x) {
+  if (!beyond_input_range(x)) return ok();
+  return fail(CYC_E_NOT_FINITE, "%s: %s = %.17g %s", fn, name, x, what_is_wrong(x));
+}
+
+// n doubles of an array argument or field, named name[i].
+inline Outcome check_doubles(const char* fn, const char* name, const double* x, size_t n) {
+  for (size_t i = 0; i < n; ++i)
+    if (beyond_input_range(x[i]))
+      return fail(CYC_E_NOT_FINITE, "%s: %s[%zu] = %.17g %s", fn, name, i, x[i],
+                  what_is_wrong(x[i]));
+  return ok();
+}
+
+// rows x width doubles at a row stride (in doubles), named name[row][col].
+inline Outcome check_rows(const char* fn, const char* name, const double* x, size_t rows,
+                          size_t stride, size_t width) {
+  for (size_t r = 0; r < rows; ++r)
+    for (size_t c = 0; c < width; ++c)
+      if (const double v = x[r * stride + c]; beyond_input_range(v))
+        return fail(CYC_E_NOT_FINITE, "%s: %s[%zu][%zu] = %.17g %s", fn, name, r, c, v,
+                    what_is_wrong(v));
+  return ok();
+}
+
+// An integer argument or field within [lo, hi] (inclusive). Below lo is
+// CYC_E_INVALID_ARGUMENT, above hi the given status (a degree bound:
+// CYC_E_DEGREE_TOO_HIGH). Takes 64 bits, so any int or size_t compares
+// without wrapping.
+inline Outcome check_range(const char* fn, const char* name, long long n, long long lo,
+                           long long hi, int above = CYC_E_INVALID_ARGUMENT) {
+  if (n < lo) return fail(CYC_E_INVALID_ARGUMENT, "%s: %s = %lld is below %lld", fn, name, n, lo);
+  if (n > hi) return fail(above, "%s: %s = %lld exceeds %lld", fn, name, n, hi);
+  return ok();
+}
+
+// a * b, or false when it does not fit in size_t.
+inline bool size_product(size_t a, size_t b, size_t& out) {
+  return !__builtin_mul_overflow(a, b, &out);
+}
 
 inline Vec3d vec(const double* p) { return Vec3d(p[0], p[1], p[2]); }
 

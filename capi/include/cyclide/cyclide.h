@@ -91,8 +91,11 @@ typedef struct cyc_allocator {
   void* userdata;
 } cyc_allocator;
 
-/** Called on every error with the status and message (the message buffer
- *  belongs to the context and is valid until its next call). */
+/** Called on every error with the status and message (valid while the
+ *  handler runs). The handler may call the library, also on the same
+ *  context: the failing call still returns its own status, and after the
+ *  handler returns the context's last status and message are the failing
+ *  call's again. It must not destroy the context. */
 typedef void (*cyc_error_handler)(int status, const char* message, void* userdata);
 
 /* ------------------------------------------------------------ versions */

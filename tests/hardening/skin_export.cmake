@@ -1,0 +1,1 @@
+# cyclide_hardening_test(...) entries of this family (see CMakeLists.txt).
