@@ -1155,11 +1155,12 @@ void op_optimize(Input& in, Ctx& c) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fz::choose_reentry(data, size);
   Input in(data, size);
   Ctx c;
   if (cyc_context_create(nullptr, &c.ctx) != CYC_OK) return 0;
   if (in.flag()) {
-    cyc_context_set_error_handler(c.ctx, &fz::HandlerLog::callback, &c.log);
+    fz::install_handler(c.ctx, c.log);
     c.logp = &c.log;
   }
   build_surface(in, c, 0);

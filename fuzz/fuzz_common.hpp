@@ -64,19 +64,75 @@ inline bool known_status(int s) {
 
 // ------------------------------------------------------------ error handler
 
-// Records the error callback so that every call can be checked against it.
+// Re-entrant error handlers. For each input one of four behaviours is
+// chosen from a hash of its bytes (choose_reentry, called first by every
+// harness, so a reproducer replays the same way): the handler only records;
+// it also makes a call that succeeds on the same context (a line, created
+// and destroyed); a call that fails with another status (a curve of degree
+// 99); or both. Whatever it does, the failing call must return its own
+// status and leave its own status and message in the context (check_call).
+enum class Reentry { none = 0, succeed = 1, fail = 2, both = 3 };
+
+inline Reentry& reentry_mode() {
+  static Reentry mode = Reentry::none;
+  return mode;
+}
+
+inline void choose_reentry(const uint8_t* data, size_t size) {
+  uint32_t h = 2166136261u;  // FNV-1a
+  for (size_t i = 0; i < size; ++i) h = (h ^ data[i]) * 16777619u;
+  reentry_mode() = Reentry(h % 4);
+}
+
+// The calls a re-entrant handler makes on ctx, and their expected statuses.
+inline void reenter(cyc_context* ctx) {
+  const Reentry mode = reentry_mode();
+  if (mode == Reentry::succeed || mode == Reentry::both) {
+    const double O[3] = {0, 0, 0}, X[3] = {1, 2, 3};
+    cyc_curve* line = nullptr;
+    const int s = cyc_curve_create_line(ctx, O, X, &line);
+    // A failing tracking allocator or a full caller block may refuse it.
+    FZ_CHECK(s == CYC_OK || s == CYC_E_OUT_OF_MEMORY, "re-entrant cyc_curve_create_line: %d", s);
+    cyc_curve_destroy(ctx, line);
+  }
+  if (mode == Reentry::fail || mode == Reentry::both) {
+    const double coeffs[4] = {0, 0, 0, 1};
+    cyc_curve* c = nullptr;
+    const int s = cyc_curve_create_polynomial(ctx, 99, coeffs, 4, &c);
+    FZ_CHECK(s == CYC_E_DEGREE_TOO_HIGH && c == nullptr,
+             "re-entrant cyc_curve_create_polynomial(degree 99): %d", s);
+  }
+}
+
+// Records the error callback so that every call can be checked against it;
+// re-enters the library on ctx as reentry_mode() says. Errors of the
+// handler's own calls are not recorded (they are not the call under test).
 struct HandlerLog {
   int calls = 0;
   int status = CYC_OK;
   const char* message = nullptr;
+  cyc_context* ctx = nullptr;  // the context the handler is installed on
+  int active = 0;              // handler frames on the stack
   static void callback(int status, const char* message, void* userdata) {
     auto* log = static_cast<HandlerLog*>(userdata);
+    if (log->active > 0) return;
     FZ_LOG("    (error handler: %s)", message);
     ++log->calls;
     log->status = status;
     log->message = message;
+    if (log->ctx) {
+      ++log->active;
+      reenter(log->ctx);
+      --log->active;
+    }
   }
 };
+
+// Install log as ctx's error handler.
+inline int install_handler(cyc_context* ctx, HandlerLog& log) {
+  log.ctx = ctx;
+  return cyc_context_set_error_handler(ctx, &HandlerLog::callback, &log);
+}
 
 // The contract every call on a live context satisfies: a known status, never
 // CYC_E_INTERNAL ("a bug in cyclide"), last status/message recorded, the

@@ -141,6 +141,7 @@ void use_blend(State& st, const cyc_lie_cone& R, const cyc_lie_cone& S, bool tam
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fz::choose_reentry(data, size);
   Input in(data, size);
   State st(in);
   if (cyc_context_create(nullptr, &st.ctx) != CYC_OK) return 0;

@@ -418,6 +418,7 @@ void op_destroy(State& st) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fz::choose_reentry(data, size);
   Input in(data, size);
   fz::Tracker tracker;
   const int alloc_mode = in.range(0, 2);  // 0 default, 1 tracking, 2 tracking + failure
@@ -444,7 +445,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   State st(in);
   st.ctx = ctx;
   if (in.flag()) {
-    const int s = cyc_context_set_error_handler(ctx, &fz::HandlerLog::callback, &st.log);
+    const int s = fz::install_handler(ctx, st.log);
     fz::check_call("cyc_context_set_error_handler", ctx, s, nullptr);
     FZ_CHECK(s == CYC_OK, "set_error_handler failed");
     st.logp = &st.log;

@@ -1397,6 +1397,7 @@ void op_nulls(State& st) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fz::choose_reentry(data, size);
   Input in(data, size);
   g_wild = false;
   fz::Tracker tracker;
@@ -1407,7 +1408,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   FZ_CHECK(sc == CYC_OK, "context: %s", cyc_status_name(sc));
   if (alloc_mode == 0) st.tracker = &tracker;
   if (in.flag() == false) {
-    FZ_CHECK(cyc_context_set_error_handler(st.ctx, &fz::HandlerLog::callback, &st.log) == CYC_OK,
+    FZ_CHECK(fz::install_handler(st.ctx, st.log) == CYC_OK,
              "handler");
     st.logp = &st.log;
   }

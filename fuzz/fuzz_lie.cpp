@@ -960,6 +960,7 @@ void op_nulls(State& st) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fz::choose_reentry(data, size);
   Input in(data, size);
   fz::Tracker tracker;
   const int alloc_mode = in.range(0, 2);  // 0 default, 1 tracking, 2 tracking + failure
@@ -974,7 +975,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
            cyc_status_name(sc));
   if (sc != CYC_OK) return 0;
   if (in.flag()) {
-    FZ_CHECK(cyc_context_set_error_handler(st.ctx, &fz::HandlerLog::callback, &st.log) == CYC_OK,
+    FZ_CHECK(fz::install_handler(st.ctx, st.log) == CYC_OK,
              "handler");
     st.logp = &st.log;
   }

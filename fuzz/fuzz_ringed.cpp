@@ -778,11 +778,12 @@ void op_nway(Input& in, Ctx& c) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  fz::choose_reentry(data, size);
   Input in(data, size);
   Ctx c;
   FZ_CHECK(cyc_context_create(nullptr, &c.ctx) == CYC_OK, "context");
   if (in.flag()) {
-    FZ_CHECK(cyc_context_set_error_handler(c.ctx, &fz::HandlerLog::callback, &c.log) == CYC_OK,
+    FZ_CHECK(fz::install_handler(c.ctx, c.log) == CYC_OK,
              "handler");
     c.logp = &c.log;
   }

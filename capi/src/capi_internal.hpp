@@ -263,10 +263,11 @@ inline void record(cyc_context* ctx, const Outcome& o) {
 }
 
 // The one guard every entry point runs through. It is re-entrant: the
-// error handler may call the library on the same context; the handler gets
-// the call's own message (a copy, stable while the handler runs), and
-// afterwards the context holds, and the call returns, the call's own
-// status and message, whatever the handler's calls did.
+// error handler may call the library on the same context; it gets the
+// context's message buffer (valid until the next call on the context, as
+// the header promises), and when it returns the guard writes the call's own
+// status and message back, so the call returns, and the context holds, its
+// own status and message whatever the handler's calls did.
 template <class Body>
 int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
   if (!ctx) return CYC_E_NULL_ARGUMENT;
@@ -282,7 +283,7 @@ int run(cyc_context* ctx, const char* fn, Body&& body) noexcept {
   if (o.status == CYC_OK) return succeed(ctx);
   record(ctx, o);
   if (const cyc_error_handler handler = ctx->handler) {
-    handler(o.status, o.text, ctx->handler_userdata);
+    handler(o.status, ctx->message, ctx->handler_userdata);
     record(ctx, o);  // the handler's own calls may have replaced it
   }
   return o.status;

@@ -7,6 +7,7 @@
 // writes outputs only on success.
 #include <Eigen/Core>
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -252,30 +253,52 @@ T* carve(unsigned char*& at, std::size_t count) {
   return p;
 }
 
+// Adds the bytes of count T's at worst alignment to total; false (total
+// unusable) when the sum does not fit in size_t. With the supported counts
+// (n <= kMaxDelaunayPoints, ntri <= kMaxTriangles) every sum fits in a
+// 64-bit size_t; the check keeps a narrower size_t from wrapping.
 template <class T>
-std::size_t bytes_for(std::size_t count) {
-  return count * sizeof(T) + alignof(T);
+bool add_bytes(std::size_t& total, std::size_t count) {
+  std::size_t bytes = 0;
+  return size_product(count, sizeof(T), bytes) &&
+         !__builtin_add_overflow(bytes, alignof(T), &bytes) &&
+         !__builtin_add_overflow(total, bytes, &total);
 }
 
+bool points_supported(long long n) { return n >= 3 && n <= kMaxDelaunayPoints; }
+bool triangles_supported(long long ntri) { return ntri >= 1 && ntri <= kMaxTriangles; }
+
+// The C workspaces: the core's plus aligned copies of the points (and
+// Powell-Sabin's staged output, the design's staged patches). 0 outside the
+// supported counts, or if the sum would not fit.
 std::size_t delaunay_bytes(int n) {
-  const std::size_t ints = delaunay_workspace_size(n);
-  if (ints == 0) return 0;
-  return bytes_for<Vec2d>(std::size_t(n)) + bytes_for<int>(ints);
+  if (!points_supported(n)) return 0;
+  std::size_t total = 0;
+  const bool fits = add_bytes<Vec2d>(total, std::size_t(n)) &&
+                    add_bytes<int>(total, delaunay_workspace_size(n));
+  return fits ? total : 0;
 }
 
 std::size_t powell_sabin_bytes(int n, int ntri) {
-  if (n < 3 || ntri < 1 || ntri > (1 << 27)) return 0;
-  return 2 * bytes_for<Vec2d>(std::size_t(n)) + bytes_for<int>(powell_sabin_workspace_size(ntri)) +
-         bytes_for<QuadraticGraphTriangle>(6 * std::size_t(ntri));
+  if (!points_supported(n) || !triangles_supported(ntri)) return 0;
+  std::size_t total = 0;
+  const bool fits = add_bytes<Vec2d>(total, std::size_t(n)) &&
+                    add_bytes<Vec2d>(total, std::size_t(n)) &&
+                    add_bytes<int>(total, powell_sabin_workspace_size(ntri)) &&
+                    add_bytes<QuadraticGraphTriangle>(total, 6 * std::size_t(ntri));
+  return fits ? total : 0;
 }
 
 std::size_t design_bytes(int n, int ntri) {
   const std::size_t core = cyclide_design_workspace_size(n, ntri);
   const int patches = cyclide_design_max_patches(n, ntri);
   if (core == 0 || patches <= 0) return 0;
-  return bytes_for<unsigned char>(core) + alignof(std::max_align_t) +
-         bytes_for<QuadraticGraphTriangle>(std::size_t(patches)) +
-         bytes_for<RationalCubicTriangle>(std::size_t(patches));
+  std::size_t total = 0;
+  const bool fits = add_bytes<unsigned char>(total, core) &&
+                    add_bytes<std::max_align_t>(total, 0) &&
+                    add_bytes<QuadraticGraphTriangle>(total, std::size_t(patches)) &&
+                    add_bytes<RationalCubicTriangle>(total, std::size_t(patches));
+  return fits ? total : 0;
 }
 
 // Releases a workspace taken from the context's allocator.
@@ -866,11 +889,12 @@ int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* w
     REQUIRE(work);
     REQUIRE(tri);
     REQUIRE(ntri);
-    if (n < 3 || n > kMaxDelaunayPoints)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is outside 3..%d", fn, n,
-                  kMaxDelaunayPoints);
-    if (tri_cap < 0) return fail(CYC_E_INVALID_ARGUMENT, "%s: tri_cap = %d < 0", fn, tri_cap);
+    TRY(check_range(fn, "n", n, 3, kMaxDelaunayPoints));
+    TRY(check_range(fn, "tri_cap", tri_cap, 0, INT_MAX));
     const std::size_t need = delaunay_bytes(n);
+    if (need == 0)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d: the workspace size does not fit in size_t",
+                  fn, n);
     if (work_bytes < need)
       return fail(CYC_E_BUFFER_TOO_SMALL, "%s: work holds %zu bytes, %zu needed", fn, work_bytes,
                   need);
@@ -922,12 +946,13 @@ int cyc_powell_sabin_interpolate(cyc_context* ctx, const double* b, const double
     REQUIRE(work);
     REQUIRE(out);
     REQUIRE(nout);
-    if (n < 3 || n > kMaxDelaunayPoints)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is outside 3..%d", fn, n,
-                  kMaxDelaunayPoints);
-    if (ntri < 1 || ntri > (1 << 27))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: ntri = %d is outside 1..2^27", fn, ntri);
+    TRY(check_range(fn, "n", n, 3, kMaxDelaunayPoints));
+    TRY(check_range(fn, "ntri", ntri, 1, kMaxTriangles));
     const std::size_t need = powell_sabin_bytes(n, ntri);
+    if (need == 0)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: (n, ntri) = (%d, %d): the workspace size does not fit in size_t", fn, n,
+                  ntri);
     if (work_bytes < need)
       return fail(CYC_E_BUFFER_TOO_SMALL, "%s: work holds %zu bytes, %zu needed", fn, work_bytes,
                   need);
@@ -1042,13 +1067,11 @@ int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data,
     REQUIRE(data);
     REQUIRE(patches);
     REQUIRE(npatches);
-    if (n < 3 || n > kMaxDelaunayPoints)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is outside 3..%d", fn, n,
-                  kMaxDelaunayPoints);
-    if (ntri < 0 || (ntri > 0 && !tri) || ntri > (1 << 27))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: ntri = %d with tri %s", fn, ntri,
-                  tri ? "given" : "NULL");
-    if (cap < 0) return fail(CYC_E_INVALID_ARGUMENT, "%s: cap = %d < 0", fn, cap);
+    TRY(check_range(fn, "n", n, 3, kMaxDelaunayPoints));
+    TRY(check_range(fn, "ntri", ntri, 0, kMaxTriangles));
+    if (ntri > 0 && !tri)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: ntri = %d > 0 with tri NULL", fn, ntri);
+    TRY(check_range(fn, "cap", cap, 0, INT_MAX));
     const int given = tri ? ntri : 0;
     cyc_design_report rep;
     std::memset(&rep, 0, sizeof rep);
@@ -1058,6 +1081,10 @@ int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data,
       if (report) *report = rep;
     };
     const std::size_t need = design_bytes(n, given);
+    if (need == 0)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: (n, ntri) = (%d, %d): the workspace size does not fit in size_t", fn, n,
+                  given);
     Scratch scratch;
     if (!work) {
       scratch.a = &ctx->allocator;

@@ -100,11 +100,14 @@ struct CyclideDesignReport {
 
 // Bytes of workspace design_cyclide_surface needs for n data (ntri = 0:
 // the triangulation is computed, room for Delaunay; else the caller's
-// ntri triangles). 0 for n < 3.
+// ntri triangles). The supported arguments are n in 3..kMaxDelaunayPoints
+// and ntri in 0..kMaxTriangles (delaunay.hpp), for which every derived
+// size fits (at most about 2.5e11 bytes); 0 for any other argument.
 std::size_t cyclide_design_workspace_size(int n, int ntri) noexcept;
 
 // Upper bound on the patch count: 6 (2n - 5) for a Delaunay triangulation,
-// 6 ntri for a given one.
+// 6 ntri for a given one; at most 6 kMaxTriangles = 6e8, so it never
+// wraps. 0 outside the supported arguments of cyclide_design_workspace_size.
 int cyclide_design_max_patches(int n, int ntri) noexcept;
 
 // Seed 004 §4.2. data[0..n) oriented points; tri[0..ntri) a triangulation
@@ -114,7 +117,8 @@ int cyclide_design_max_patches(int n, int ntri) noexcept;
 // quadratic isotropic[k] (the Powell-Sabin interpolant of (B_i, beta_i))
 // and its cyclide patch patches[k] (rational cubic Bezier triangle,
 // cyclide_cubic_triangle), triangle by triangle.
-// Statuses: null_argument; invalid_argument (n < 3, a bad triangulation,
+// Statuses: null_argument; invalid_argument (n outside 3..kMaxDelaunayPoints,
+// ntri outside 0..kMaxTriangles, a bad triangulation,
 // two data with the same b_i); not_finite, pole_in_gauss_image (a normal at
 // W, or W inside the normals' cone: gauss_image_contains_pole),
 // numerical_overflow (report->first_bad_datum: a datum beyond the range, or

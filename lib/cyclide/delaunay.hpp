@@ -31,8 +31,16 @@
 namespace cyclide {
 inline namespace v0 {
 
-// Largest point count accepted (the workspace size stays below 2^31 ints).
+// Largest point count accepted: the workspace, 26 n + 7 ints, stays below
+// 2^31 ints, and the 2n - 5 triangles (and the design's 6 (2n - 5)
+// micro-triangles, cyclide_design.hpp) stay below INT_MAX.
 constexpr int kMaxDelaunayPoints = 50'000'000;
+
+// Largest triangle count accepted from a caller (validate_triangulation,
+// Powell-Sabin, the design): a triangulation of kMaxDelaunayPoints points
+// has fewer, and 6 kMaxTriangles micro-triangles still fit in an int, so no
+// size derived from a triangle count can overflow.
+constexpr int kMaxTriangles = 2 * kMaxDelaunayPoints;
 
 // Smallest nonzero coordinate accepted, relative to the largest (after
 // scaling that one into [1/2, 1)): below it the exact predicates' products
@@ -52,7 +60,8 @@ struct DelaunayReport {
 // n > kMaxDelaunayPoints).
 std::size_t delaunay_workspace_size(int n) noexcept;
 
-// Upper bound 2n - 5 on the number of triangles of n >= 3 points (0 else).
+// Upper bound 2n - 5 on the number of triangles of n points, n in
+// 3..kMaxDelaunayPoints (0 for any other n: never negative or wrapped).
 int delaunay_max_triangles(int n) noexcept;
 
 // The Delaunay triangulation of pts[0..n): triangles tri[0..ntri) as
@@ -74,12 +83,14 @@ Status delaunay_triangulate(const Vec2d* pts, int n, int* work, std::size_t work
                             int (*tri)[3], int tri_cap, int& ntri,
                             DelaunayReport* report = nullptr) noexcept;
 
-// Ints of workspace validate_triangulation needs for ntri triangles.
+// Ints of workspace validate_triangulation needs for ntri triangles, ntri in
+// 1..kMaxTriangles (0 for any other ntri).
 std::size_t triangulation_workspace_size(int ntri) noexcept;
 
 // Checks a user-given triangulation: every index in [0, n), every triangle
 // counter-clockwise and non-degenerate (exact orientation > 0), and every
-// edge used at most twice and then with opposite orientations. If
+// edge used at most twice and then with opposite orientations (ntri in
+// 1..kMaxTriangles, else invalid_argument). If
 // neighbor != nullptr, neighbor[3t + k] receives the triangle across the
 // edge tri[t][k] -> tri[t][(k+1)%3] (or -1 on the boundary). Does not
 // detect a triangulation that folds over itself around a vertex with

@@ -40,13 +40,15 @@ namespace cyclide {
 inline namespace v0 {
 
 // Ints of workspace powell_sabin_interpolate needs for ntri triangles
-// (the sorted edges and the adjacency: 6 ntri).
+// (the sorted edges and the adjacency: 6 ntri), ntri in 1..kMaxTriangles
+// (0 for any other ntri).
 std::size_t powell_sabin_workspace_size(int ntri) noexcept;
 
 // The interpolant of values z[i] and gradients g[i] at the points b[i]
 // over the triangulation tri[0..ntri) (e.g. from delaunay_triangulate), as
 // 6 ntri QuadraticGraphTriangles in out[0..nout). Statuses:
-//   invalid_argument  null pointers, n < 3, ntri < 1, or a bad triangulation
+//   invalid_argument  null pointers, n < 3, ntri outside 1..kMaxTriangles
+//                     (delaunay.hpp: 6 ntri fits in an int), or a bad triangulation
 //                     (see validate_triangulation: index out of range,
 //                     clockwise or zero-area triangle, non-manifold edge)
 //   not_finite        a NaN/Inf or |x| > 1e100 among b, z, g

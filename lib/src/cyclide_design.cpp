@@ -251,15 +251,21 @@ int patch_orientation(const QuadraticGraphTriangle& q) {
   return sign;
 }
 
+// The supported arguments: every size derived from them fits (6 kMaxTriangles
+// micro-triangles in an int, their bytes in a 64-bit size_t), so the queries
+// below compute nothing outside them.
+bool supported(int n, int ntri) {
+  return n >= 3 && n <= kMaxDelaunayPoints && ntri >= 0 && ntri <= kMaxTriangles;
+}
+
 }  // namespace
 
 std::size_t cyclide_design_workspace_size(int n, int ntri) noexcept {
-  if (n < 3 || n > kMaxDelaunayPoints || ntri < 0) return 0;
-  return workspace_bytes(n, ntri);
+  return supported(n, ntri) ? workspace_bytes(n, ntri) : 0;
 }
 
 int cyclide_design_max_patches(int n, int ntri) noexcept {
-  if (n < 3 || ntri < 0) return 0;
+  if (!supported(n, ntri)) return 0;
   return 6 * (ntri > 0 ? ntri : delaunay_max_triangles(n));
 }
 
@@ -274,8 +280,7 @@ Status design_cyclide_surface(const OrientedPoint* data, int n, const int (*tri)
     return st;
   };
   if (!data || !work || !isotropic || !patches) return fail(Status::null_argument);
-  if (n < 3 || n > kMaxDelaunayPoints || ntri < 0 || (ntri > 0 && !tri))
-    return fail(Status::invalid_argument);
+  if (!supported(n, ntri) || (ntri > 0 && !tri)) return fail(Status::invalid_argument);
   const bool given = tri && ntri > 0;
   const std::size_t need = workspace_bytes(n, given ? ntri : 0);
   if (work_bytes < need) {

@@ -427,7 +427,9 @@ std::size_t delaunay_workspace_size(int n) noexcept {
   return N + (N + 1) + 3 * T + 3 * T + T + T + T + 3 * (T + 2);
 }
 
-int delaunay_max_triangles(int n) noexcept { return n < 3 ? 0 : 2 * n - 5; }
+int delaunay_max_triangles(int n) noexcept {
+  return n < 3 || n > kMaxDelaunayPoints ? 0 : 2 * n - 5;
+}
 
 Status delaunay_triangulate(const Vec2d* pts, int n, int* work, std::size_t work_len,
                             int (*tri)[3], int tri_cap, int& ntri,
@@ -539,7 +541,7 @@ Status delaunay_triangulate(const Vec2d* pts, int n, int* work, std::size_t work
 }
 
 std::size_t triangulation_workspace_size(int ntri) noexcept {
-  return ntri <= 0 ? 0 : 3 * static_cast<std::size_t>(ntri);
+  return ntri <= 0 || ntri > kMaxTriangles ? 0 : 3 * static_cast<std::size_t>(ntri);
 }
 
 Status validate_triangulation(const Vec2d* pts, int n, const int (*tri)[3], int ntri, int* work,
@@ -551,7 +553,7 @@ Status validate_triangulation(const Vec2d* pts, int n, const int (*tri)[3], int 
     return s;
   };
   if (pts == nullptr || tri == nullptr || work == nullptr || n < 3 || ntri < 1 ||
-      ntri > 2 * kMaxDelaunayPoints)
+      ntri > kMaxTriangles)
     return finish(Status::invalid_argument);
   double max_abs = 0;
   for (int i = 0; i < n; ++i) {

@@ -85,14 +85,14 @@ Vec2d triangle_incenter(const Vec2d& a, const Vec2d& b, const Vec2d& c) noexcept
 }
 
 std::size_t powell_sabin_workspace_size(int ntri) noexcept {
-  return ntri <= 0 ? 0 : 6 * static_cast<std::size_t>(ntri);
+  return ntri <= 0 || ntri > kMaxTriangles ? 0 : 6 * static_cast<std::size_t>(ntri);
 }
 
 Status powell_sabin_interpolate(const Vec2d* b, const double* z, const Vec2d* g, int n,
                                 const int (*tri)[3], int ntri, int* work, std::size_t work_len,
                                 QuadraticGraphTriangle* out, int out_cap, int& nout) noexcept {
   if (b == nullptr || z == nullptr || g == nullptr || tri == nullptr || work == nullptr ||
-      out == nullptr || n < 3 || ntri < 1 || ntri > 2 * kMaxDelaunayPoints)
+      out == nullptr || n < 3 || ntri < 1 || ntri > kMaxTriangles)
     return Status::invalid_argument;
   for (int i = 0; i < n; ++i)
     if (!finite_input(b[i].x()) || !finite_input(b[i].y()) || !finite_input(z[i]) ||

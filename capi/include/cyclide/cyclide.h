@@ -91,11 +91,12 @@ typedef struct cyc_allocator {
   void* userdata;
 } cyc_allocator;
 
-/** Called on every error with the status and message (valid while the
- *  handler runs). The handler may call the library, also on the same
- *  context: the failing call still returns its own status, and after the
- *  handler returns the context's last status and message are the failing
- *  call's again. It must not destroy the context. */
+/** Called on every error with the status and message. The message is the
+ *  context's buffer, valid until the next call on the context. The handler
+ *  may call the library, also on the same context (such a call replaces the
+ *  buffer's text while the handler runs): the failing call still returns its
+ *  own status, and when the handler returns the context's last status and
+ *  message are the failing call's again. It must not destroy the context. */
 typedef void (*cyc_error_handler)(int status, const char* message, void* userdata);
 
 /* ------------------------------------------------------------ versions */
