@@ -2506,18 +2506,22 @@ CYC_API int cyc_bicubic_patch_eval(cyc_context* ctx, const cyc_rational_bicubic_
 
 /* ---- Delaunay triangulation and Powell-Sabin interpolation (§4.2) */
 
-/** Bytes of workspace cyc_delaunay_triangulate needs for n points (0 for
- *  n < 3 or n > 50,000,000), and the bound 2n - 5 on its triangles. */
+/** Bytes of workspace cyc_delaunay_triangulate needs for n points, and the
+ *  bound 2n - 5 on its triangles. The supported n is 3..50,000,000 (every
+ *  derived size then fits); for any other n both return 0, never a
+ *  negative or wrapped value, and cyc_delaunay_triangulate refuses it. */
 CYC_API size_t cyc_delaunay_workspace_size(int n);
 CYC_API int cyc_delaunay_max_triangles(int n);
 /** The Delaunay triangulation of the points (pts[2i], pts[2i+1]) as
  *  counter-clockwise index triples tri[3k..3k+2], k < *ntri.
- *  CYC_E_INVALID_ARGUMENT (n out of range, two equal points),
- *  CYC_E_COLLINEAR_POINTS, CYC_E_BUFFER_TOO_SMALL (work_bytes below the
+ *  CYC_E_INVALID_ARGUMENT (n outside 3..50,000,000, tri_cap < 0, two equal
+ *  points), CYC_E_COLLINEAR_POINTS, CYC_E_BUFFER_TOO_SMALL (work_bytes below the
  *  size, or tri_cap below the count: *ntri then receives the count). */
 CYC_API int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* work,
                                      size_t work_bytes, int* tri, int tri_cap, int* ntri);
-/** Bytes of workspace cyc_powell_sabin_interpolate needs. */
+/** Bytes of workspace cyc_powell_sabin_interpolate needs for n in
+ *  3..50,000,000 and ntri in 1..100,000,000; 0 for any other arguments
+ *  (which the interpolation refuses with CYC_E_INVALID_ARGUMENT). */
 CYC_API size_t cyc_powell_sabin_workspace_size(int n, int ntri);
 /** The Powell-Sabin C1 quadratic interpolant of values z[i] and gradients
  *  (g[2i], g[2i+1]) at the points (b[2i], b[2i+1]) over tri (3 ntri
@@ -2541,9 +2545,11 @@ CYC_API int cyc_oriented_point_of(cyc_context* ctx, const cyc_isotropic_datum* d
 CYC_API int cyc_gauss_image_contains_pole(cyc_context* ctx, const cyc_oriented_point* data,
                                           int n, int* out);
 /** Bytes of caller workspace for cyc_design_cyclide_surface (ntri = 0: the
- *  Delaunay triangulation is computed); 0 for n < 3. */
+ *  Delaunay triangulation is computed). The supported arguments are n in
+ *  3..50,000,000 and ntri in 0..100,000,000; for any other both queries
+ *  return 0 (never negative or wrapped) and the design refuses them. */
 CYC_API size_t cyc_design_workspace_size(int n, int ntri);
-/** Upper bound on the patch count: 6 (2n - 5), or 6 ntri. */
+/** Upper bound on the patch count: 6 (2n - 5), or 6 ntri (at most 6e8). */
 CYC_API int cyc_design_max_patches(int n, int ntri);
 /** Seed 004 §4.2: the G1 patchwork of parabolic cyclide cubic triangles
  *  interpolating the oriented points data[0..n). tri = NULL (ntri = 0):
