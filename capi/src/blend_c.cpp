@@ -1,6 +1,9 @@
 // The C entry points of blends (seed 000 §9): exact u-derivatives, canal
 // and ringed blends (creation tier: they allocate the surface handle) and
 // the continuity report (SPEC.md "Blends").
+#include <climits>
+#include <cmath>
+
 #include "capi_internal.hpp"
 #include "cyclide/blend.hpp"
 
@@ -18,6 +21,35 @@ Outcome check_order(const char* fn, int K, int lo) {
                 kMaxBlendOrder);
   return ok();
 }
+
+// A circle parameter v: f(u, v) is a Mobius map of the projective line, so
+// v = +-infinity is the point f = alpha / gamma of the circle and any
+// number is valid; only NaN is not.
+Outcome check_circle_parameter(const char* fn, const char* name, double v) {
+  if (!std::isnan(v)) return ok();
+  return fail(CYC_E_NOT_FINITE, "%s: %s = %.17g is NaN", fn, name, v);
+}
+
+// The fields of a blend end that a blend of order K reads: u, the circle
+// parameters v[0..nv-1], lambda and phi[m - 2] = phi^(m) for m = 2..K
+// (named name.u, ...). The unused phi are not read.
+Outcome check_end(const char* fn, const char* name, const cyc_blend_end& e, int K, int nv) {
+  char field[64];
+  std::snprintf(field, sizeof field, "%s.u", name);
+  TRY(check_double(fn, field, e.u));
+  for (int j = 0; j < nv; ++j) {
+    std::snprintf(field, sizeof field, "%s.v[%d]", name, j);
+    TRY(check_circle_parameter(fn, field, e.v[j]));
+  }
+  std::snprintf(field, sizeof field, "%s.lambda", name);
+  TRY(check_double(fn, field, e.lambda));
+  std::snprintf(field, sizeof field, "%s.phi", name);
+  return check_doubles(fn, field, e.phi, size_t(K > 1 ? K - 1 : 0));
+}
+
+// The points v[j] a blend reads: two for the canal blend's curves, three
+// for the ringed blend's (seed 000 §9.1, §9.2).
+int points_of(int lo) { return lo == 2 ? 2 : 3; }
 
 }  // namespace
 
@@ -55,10 +87,17 @@ Outcome blend(const char* fn, cyc_context* ctx, const cyc_blend_end* start,
   REQUIRE(start->surface);
   REQUIRE(end->surface);
   REQUIRE(out);
-  if (Outcome o = check_order(fn, K, lo); o.status) return o;
+  TRY(check_order(fn, K, lo));
+  TRY(check_end(fn, "start", *start, K, points_of(lo)));
+  TRY(check_end(fn, "end", *end, K, points_of(lo)));
+  TRY(check_double(fn, "t0", t0));
+  TRY(check_double(fn, "t1", t1));
   Surface S;
   double bad_u = t0;
   const Status s = make(end_of(*start), end_of(*end), K, t0, t1, S, &bad_u);
+  if (s == Status::bad_domain)
+    return fail(int(s), "%s: the blend's interval [t0, t1] = [%.17g, %.17g] is empty or "
+                "reversed", fn, t0, t1);
   if (matched && s == Status::degenerate_circle_parameter) return unmatched(fn, -1, bad_u);
   if (s != Status::ok) return located(s) ? from_core_at(fn, s, bad_u) : from_core(fn, s);
   return emit(fn, ctx, out, S);
@@ -72,11 +111,17 @@ Outcome blend_spline(const char* fn, cyc_context* ctx, const cyc_blend_end* ends
   REQUIRE(ends);
   REQUIRE(knots);
   REQUIRE(pieces);
-  if (n < 2 || n > kMaxSplineKnots)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is outside 2..%d", fn, n, kMaxSplineKnots);
+  // n is compared with its bound before ends and knots are read.
+  TRY(check_range(fn, "n", n, 2, kMaxSplineKnots));
   for (int i = 0; i < n; ++i)
     if (!ends[i].surface) return fail(CYC_E_NULL_ARGUMENT, "%s: ends[%d].surface is NULL", fn, i);
-  if (Outcome o = check_order(fn, K, lo); o.status) return o;
+  TRY(check_order(fn, K, lo));
+  char name[24];
+  for (int i = 0; i < n; ++i) {
+    std::snprintf(name, sizeof name, "ends[%d]", i);
+    TRY(check_end(fn, name, ends[i], K, points_of(lo)));
+  }
+  TRY(check_doubles(fn, "knots", knots, size_t(n)));
   BlendEnd be[kMaxSplineKnots];
   for (int i = 0; i < n; ++i) be[i] = end_of(ends[i]);
   cyc_surface* h[kMaxSplineKnots - 1] = {};
@@ -98,6 +143,12 @@ Outcome blend_spline(const char* fn, cyc_context* ctx, const cyc_blend_end* ends
     release_all();
     if (matched && st == Status::degenerate_circle_parameter)
       return unmatched(fn, bad_piece, bad_u);
+    if (st == Status::invalid_argument)
+      return fail(int(st), "%s: an interior end has lambda = 0: its direction along its guide "
+                  "surface is undefined", fn);
+    if (st == Status::bad_domain)
+      return fail(int(st), "%s: piece %d: the knots are not increasing (knots[%d] >= "
+                  "knots[%d])", fn, bad_piece, bad_piece, bad_piece + 1);
     if (located(st))
       return fail(int(st), "%s: piece %d: %s (at u = %.17g)", fn, bad_piece, explain(st), bad_u);
     return from_core(fn, st);
@@ -154,10 +205,16 @@ int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surface, doub
   return run(ctx, fn, [&] {
     REQUIRE(surface);
     REQUIRE(out);
-    if (Outcome o = check_order(fn, K, 0); o.status) return o;
+    TRY(check_order(fn, K, 0));
+    TRY(check_double(fn, "u", u));
+    TRY(check_circle_parameter(fn, "v", v));
     Vec3d d[kMaxBlendOrder + 1];
     if (Status s = derivatives_u(surface->surface, u, v, K, d); s != Status::ok)
-      return from_core(fn, s);
+      return from_core_at(fn, s, u);
+    for (int l = 0; l <= K; ++l)
+      if (!d[l].allFinite())
+        return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: d^%d x / du^%d at (u, v) = (%.17g, %.17g) "
+                    "is not finite", fn, l, l, u, v);
     for (int l = 0; l <= K; ++l) put3(out + 3 * l, d[l]);
     return ok();
   });
@@ -206,8 +263,15 @@ int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua, dou
     REQUIRE(a);
     REQUIRE(b);
     REQUIRE(out);
-    if (Outcome o = check_order(fn, K, 0); o.status) return o;
-    if (n < 1) return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d must be >= 1", fn, n);
+    TRY(check_order(fn, K, 0));
+    TRY(check_range(fn, "n", n, 1, INT_MAX));
+    TRY(check_double(fn, "ua", ua));
+    TRY(check_double(fn, "lambda", lambda));
+    TRY(check_double(fn, "ub", ub));
+    if (va)
+      for (int i = 0; i < n; ++i)
+        if (std::isnan(va[i]))
+          return fail(CYC_E_NOT_FINITE, "%s: va[%d] = %.17g is NaN", fn, i, va[i]);
     ContinuityReport R;
     if (Status s = continuity_report(a->surface, ua, lambda, b->surface, ub, K, va, n, R);
         s != Status::ok)
@@ -225,6 +289,13 @@ int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua, dou
       C.point_scale_l[l] = R.point_scale_l[l];
       C.circle_jump[l] = R.circle_jump[l];
     }
+    bool finite = std::isfinite(C.max_gap) && std::isfinite(C.point_scale) &&
+                  std::isfinite(C.max_normal_angle);
+    for (int l = 0; l <= kMaxBlendOrder; ++l)
+      finite = finite && std::isfinite(C.point_jump[l]) && std::isfinite(C.point_scale_l[l]) &&
+               std::isfinite(C.circle_jump[l]);
+    if (!finite)
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the jumps of the join overflow", fn);
     *out = C;
     return ok();
   });

@@ -71,30 +71,70 @@ static_assert(CYC_MAX_MOBIUS_DEGREE == kMaxMobiusDegree, "bound");
 
 using namespace cyclide::capi;
 
-// ------------------------------------------------------------ versions
+// ------------------------------------------------------------ inputs
+
+namespace cyclide::capi {
+Outcome circle_parameter_of(const char* fn, const cyc_mobius* f, Mobius& m);
+}
+
+// The circle parameter f of a creator (NULL: f = v, m untouched): f.degree
+// is compared with its bound before the coefficient arrays are read, every
+// coefficient is checked and named (f.alpha[k], ...). Also used by the
+// creators of ringed_c.cpp.
+Outcome capi::circle_parameter_of(const char* fn, const cyc_mobius* f, Mobius& m) {
+  if (!f) return ok();
+  TRY(check_range(fn, "f.degree", f->degree, 0, kMaxMobiusDegree, CYC_E_DEGREE_TOO_HIGH));
+  const size_t n = size_t(f->degree) + 1;
+  TRY(check_doubles(fn, "f.alpha", f->alpha, n));
+  TRY(check_doubles(fn, "f.beta", f->beta, n));
+  TRY(check_doubles(fn, "f.gamma", f->gamma, n));
+  TRY(check_doubles(fn, "f.delta", f->delta, n));
+  Mobius r;
+  if (Status s = make_mobius(f->degree, f->alpha, f->beta, f->gamma, f->delta, r);
+      s != Status::ok) {
+    if (s == Status::degenerate_circle_parameter)
+      return fail(int(s), "%s: the circle parameter f has alpha = beta = gamma = delta = 0", fn);
+    return fail(int(s), "%s: circle parameter f: %s", fn, explain(s));
+  }
+  m = r;
+  return ok();
+}
 
 namespace {
+
+// The domain [u0, u1] of a creator.
+Outcome check_domain(const char* fn, double u0, double u1) {
+  TRY(check_double(fn, "u0", u0));
+  return check_double(fn, "u1", u1);
+}
+
+// A construction failure located at u, in the construction's words; the
+// generic statuses keep their explanation.
+Outcome failure_at(const char* fn, Status s, double bad_u) {
+  if (s == Status::bad_domain)
+    return fail(int(s), "%s: the domain [u0, u1] is empty or reversed", fn);
+  if (s == Status::not_finite || !std::isfinite(bad_u)) return from_core(fn, s);
+  return from_core_at(fn, s, bad_u);
+}
 
 // cyc_prrs_create and cyc_ringed_create: three curves, a Mobius f, a domain.
 template <class Make>
 Outcome three_curve_surface(const char* fn, cyc_context* ctx, const cyc_curve* const (&in)[3],
-                            const cyc_mobius* f, double u0, cyc_surface** out,
+                            const cyc_mobius* f, double u0, double u1, cyc_surface** out,
                             const char* invalid, const char* dependent, Make&& make) {
   for (int i = 0; i < 3; ++i)
     if (!in[i]) return fail(CYC_E_NULL_ARGUMENT, "%s: input curve %d of 3 is NULL", fn, i + 1);
   REQUIRE(out);
   Mobius m;
-  if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+  TRY(circle_parameter_of(fn, f, m));
+  TRY(check_domain(fn, u0, u1));
   Surface S;
   double bad_u = u0;
   const Status s = make(in[0]->curve, in[1]->curve, in[2]->curve, f ? &m : nullptr, S, &bad_u);
   if (s == Status::invalid_argument) return fail(int(s), "%s: %s", fn, invalid);
   if (s == Status::dependent_planes && dependent)
     return fail(int(s), "%s: %s (at u = %.17g)", fn, dependent, bad_u);
-  if (s != Status::ok) {
-    if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
-    return from_core_at(fn, s, bad_u);
-  }
+  if (s != Status::ok) return failure_at(fn, s, bad_u);
   return emit(fn, ctx, out, S);
 }
 
@@ -242,12 +282,15 @@ int cyc_context_set_error_handler(cyc_context* ctx, cyc_error_handler handler,
 namespace {
 // Validate stride and degree of a strided coefficient table with `width`
 // doubles per row and pack it densely (degree+1 rows) into `packed`.
-Outcome pack_rows(const char* fn, int degree, const double* rows, size_t stride, int width,
-                  double* packed) {
-  if (stride < size_t(width)) return fail(CYC_E_INVALID_ARGUMENT, "%s: stride < %d", fn, width);
-  if (degree < 0 || degree > CYC_MAX_CURVE_DEGREE)
-    return fail(degree < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
-                "%s: degree %d not in [0, %d]", fn, degree, CYC_MAX_CURVE_DEGREE);
+// The rows are named name[k][j]. The degree is compared with its bound
+// (64 bits) before any row is read.
+Outcome pack_rows(const char* fn, const char* name, int degree, const double* rows,
+                  size_t stride, int width, double* packed) {
+  if (stride < size_t(width))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: stride = %zu is below %d doubles per row", fn,
+                stride, width);
+  TRY(check_range(fn, "degree", degree, 0, CYC_MAX_CURVE_DEGREE, CYC_E_DEGREE_TOO_HIGH));
+  TRY(check_rows(fn, name, rows, size_t(degree) + 1, stride, size_t(width)));
   for (int k = 0; k <= degree; ++k)
     for (int j = 0; j < width; ++j) packed[width * k + j] = rows[k * stride + j];
   return ok();
@@ -261,7 +304,7 @@ int cyc_curve_create_polynomial(cyc_context* ctx, int degree, const double* coef
     REQUIRE(coeffs);
     REQUIRE(out);
     double packed[3 * (kMaxCurveDegree + 1)];
-    if (Outcome o = pack_rows(fn, degree, coeffs, stride, 3, packed); o.status) return o;
+    TRY(pack_rows(fn, "coeffs", degree, coeffs, stride, 3, packed));
     RationalCurve c;
     if (Status s = make_polynomial_curve(degree, packed, c); s != Status::ok)
       return from_core(fn, s);
@@ -276,7 +319,7 @@ int cyc_curve_create_rational(cyc_context* ctx, int degree, const double* coeffs
     REQUIRE(coeffs);
     REQUIRE(out);
     double packed[4 * (kMaxCurveDegree + 1)];
-    if (Outcome o = pack_rows(fn, degree, coeffs, stride, 4, packed); o.status) return o;
+    TRY(pack_rows(fn, "coeffs", degree, coeffs, stride, 4, packed));
     RationalCurve c;
     if (Status s = make_rational_curve(degree, packed, c); s != Status::ok)
       return s == Status::invalid_argument
@@ -294,11 +337,16 @@ int cyc_curve_create_bezier(cyc_context* ctx, int degree, const double* ctrl,
     REQUIRE(ctrl);
     REQUIRE(out);
     double packed[3 * (kMaxCurveDegree + 1)];
-    if (Outcome o = pack_rows(fn, degree, ctrl, stride, 3, packed); o.status) return o;
+    TRY(pack_rows(fn, "ctrl", degree, ctrl, stride, 3, packed));
+    if (weights) TRY(check_doubles(fn, "weights", weights, size_t(degree) + 1));
+    TRY(check_domain(fn, u0, u1));
     RationalCurve c;
     if (Status s = make_bezier_curve(degree, packed, weights, u0, u1, c); s != Status::ok)
       return s == Status::invalid_argument
                  ? fail(int(s), "%s: all weights are zero", fn)
+             : s == Status::bad_domain
+                 ? fail(int(s), "%s: the domain [u0, u1] = [%.17g, %.17g] is empty or reversed",
+                        fn, u0, u1)
                  : from_core(fn, s);
     return emit(fn, ctx, out, c);
   });
@@ -311,6 +359,8 @@ int cyc_curve_create_line(cyc_context* ctx, const double point[3],
     REQUIRE(point);
     REQUIRE(direction);
     REQUIRE(out);
+    TRY(check_doubles(fn, "point", point, 3));
+    TRY(check_doubles(fn, "direction", direction, 3));
     RationalCurve c;
     if (Status s = make_line(vec(point), vec(direction), c); s != Status::ok)
       return s == Status::zero_tangent ? fail(int(s), "%s: direction is zero", fn)
@@ -324,6 +374,7 @@ int cyc_curve_create_point(cyc_context* ctx, const double point[3], cyc_curve** 
   return run(ctx, fn, [&] {
     REQUIRE(point);
     REQUIRE(out);
+    TRY(check_doubles(fn, "point", point, 3));
     RationalCurve c;
     if (Status s = make_point(vec(point), c); s != Status::ok) return from_core(fn, s);
     return emit(fn, ctx, out, c);
@@ -337,6 +388,8 @@ int cyc_curve_create_line_element(cyc_context* ctx, const double point[3],
     REQUIRE(point);
     REQUIRE(tangent);
     REQUIRE(out);
+    TRY(check_doubles(fn, "point", point, 3));
+    TRY(check_doubles(fn, "tangent", tangent, 3));
     RationalCurve c;
     if (Status s = make_line_element(vec(point), vec(tangent), c); s != Status::ok)
       return s == Status::zero_tangent ? fail(int(s), "%s: tangent is zero", fn)
@@ -352,9 +405,10 @@ int cyc_curve_create_hermite(cyc_context* ctx, int order, double u0, double u1,
     REQUIRE(start);
     REQUIRE(end);
     REQUIRE(out);
-    if (order < 0 || order > CYC_MAX_HERMITE_ORDER)
-      return fail(order < 0 ? CYC_E_INVALID_ARGUMENT : CYC_E_DEGREE_TOO_HIGH,
-                  "%s: order %d not in [0, %d]", fn, order, CYC_MAX_HERMITE_ORDER);
+    TRY(check_range(fn, "order", order, 0, CYC_MAX_HERMITE_ORDER, CYC_E_DEGREE_TOO_HIGH));
+    TRY(check_rows(fn, "start", start, size_t(order) + 1, 3, 3));
+    TRY(check_rows(fn, "end", end, size_t(order) + 1, 3, 3));
+    TRY(check_domain(fn, u0, u1));
     Vec3d a[kMaxHermiteOrder + 1], b[kMaxHermiteOrder + 1];
     for (int j = 0; j <= order; ++j) {
       a[j] = vec(start + 3 * j);
@@ -386,14 +440,12 @@ int cyc_curve_eval(cyc_context* ctx, const cyc_curve* curve, double u, int order
   return run(ctx, fn, [&] {
     REQUIRE(curve);
     REQUIRE(out);
-    if (order < 0 || order > kMaxOrder)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: order %d not in [0, %d]", fn, order,
-                  kMaxOrder);
+    TRY(check_range(fn, "order", order, 0, kMaxOrder));
     const size_t need = 3 * size_t(order + 1);
     if (capacity < need)
       return fail(CYC_E_BUFFER_TOO_SMALL, "%s: capacity %zu doubles, %zu needed", fn,
                   capacity, need);
-    if (!input_ok(u)) return from_core(fn, Status::not_finite);
+    TRY(check_double(fn, "u", u));
     const auto P = curve->curve.taylor<kMaxOrder>(u);
     double tmp[3 * (kMaxOrder + 1)];
     for (int k = 0; k <= order; ++k)
@@ -418,14 +470,29 @@ int cyc_prcs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
     REQUIRE(p2);
     REQUIRE(out);
     Mobius m;
-    if (Outcome o = mobius_from(fn, f, m); o.status) return o;
+    TRY(circle_parameter_of(fn, f, m));
+    TRY(check_domain(fn, u0, u1));
     Surface S;
     double bad_u = u0;
     const Status s = make_prcs(p1->curve, p2->curve, f ? &m : nullptr, u0, u1, S, &bad_u);
-    if (s != Status::ok) {
-      if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
-      return from_core_at(fn, s, bad_u);
-    }
+    const bool point_input =
+        p1->curve.kind == CurveKind::point || p2->curve.kind == CurveKind::point;
+    const bool two_elements = p1->curve.kind == CurveKind::line_element &&
+                              p2->curve.kind == CurveKind::line_element;
+    if (s == Status::zero_tangent && point_input)
+      return fail(int(s), "%s: p1 or p2 is a constant point: its normal plane is undefined "
+                  "(a PRCS input is a curve or a line element)", fn);
+    if (s == Status::zero_tangent)
+      return fail(int(s), "%s: p1 and p2 have zero tangents on the whole domain", fn);
+    if (s == Status::dependent_planes && two_elements)
+      return fail(int(s), "%s: p1 and p2 are both line elements: their normal planes M, N are "
+                  "fixed and no circle sweeps between them", fn);
+    if (s == Status::dependent_planes)
+      return fail(int(s), "%s: the normal planes M, N of p1, p2 (8), (9) and their bisector "
+                  "plane B (10) are (nearly) dependent at u = %.17g, so the sphere center s "
+                  "is undefined (seed 000 Remark 1: e.g. two lines of curvature, or parallel "
+                  "normal planes)", fn, bad_u);
+    if (s != Status::ok) return failure_at(fn, s, bad_u);
     return emit(fn, ctx, out, S);
   });
 }
@@ -436,8 +503,9 @@ int cyc_prrs_create(cyc_context* ctx, const cyc_curve* p1, const cyc_curve* p2,
   const char* fn = "cyc_prrs_create";
   return run(ctx, fn, [&] {
     return three_curve_surface(
-        fn, ctx, {p1, p2, p3}, f, u0, out,
-        "inputs must be curves or points, not all points and no line elements", nullptr,
+        fn, ctx, {p1, p2, p3}, f, u0, u1, out,
+        "inputs must be curves or points, not all points and no line elements",
+        "the circle through p1, p2, p3 has no axis (its plane is undefined)",
         [&](const RationalCurve& a, const RationalCurve& b, const RationalCurve& c,
             const Mobius* m, Surface& S, double* bad) {
           return make_prrs(a, b, c, m, u0, u1, S, bad);
@@ -451,7 +519,7 @@ int cyc_ringed_create(cyc_context* ctx, const cyc_curve* d, const cyc_curve* n,
   const char* fn = "cyc_ringed_create";
   return run(ctx, fn, [&] {
     return three_curve_surface(
-        fn, ctx, {d, n, c}, f, u0, out,
+        fn, ctx, {d, n, c}, f, u0, u1, out,
         "d, n and c must be curves or points, not line elements",
         "the orientation function n vanishes: no circle plane",
         [&](const RationalCurve& a, const RationalCurve& b, const RationalCurve& cc,
@@ -487,6 +555,39 @@ int cyc_surface_domain(cyc_context* ctx, const cyc_surface* surface, double* u0,
 }
 
 namespace {
+// The surface parameter u is an input (|u| <= 1e100); the circle parameter
+// v is any finite number (f(u, v) is a Mobius map of the whole line). Only
+// called once the core has refused (u, v) as not finite: names the one to
+// blame.
+Outcome bad_point(const char* fn, const char* u_name, double u, const char* v_name, double v) {
+  TRY(check_double(fn, u_name, u));
+  if (!std::isfinite(v))
+    return fail(CYC_E_NOT_FINITE, "%s: %s = %.17g %s", fn, v_name, v, what_is_wrong(v));
+  return from_core(fn, Status::not_finite);
+}
+
+// After the core refused a batch or grid as not finite (it validates every
+// entry before it writes anything): the first entry to blame.
+Outcome bad_batch(const char* fn, const double* uv, size_t stride, size_t count) {
+  char u_name[48], v_name[48];
+  for (size_t k = 0; k < count; ++k) {
+    const double u = uv[k * stride], v = uv[k * stride + 1];
+    if (beyond_input_range(u) || !std::isfinite(v)) {
+      std::snprintf(u_name, sizeof u_name, "uv[%zu][0]", k);
+      std::snprintf(v_name, sizeof v_name, "uv[%zu][1]", k);
+      return bad_point(fn, u_name, u, v_name, v);
+    }
+  }
+  return from_core(fn, Status::not_finite);
+}
+Outcome bad_grid(const char* fn, const double* us, size_t nu, const double* vs, size_t nv) {
+  TRY(check_doubles(fn, "us", us, nu));
+  for (size_t j = 0; j < nv; ++j)
+    if (!std::isfinite(vs[j]))
+      return fail(CYC_E_NOT_FINITE, "%s: vs[%zu] = %.17g %s", fn, j, vs[j], what_is_wrong(vs[j]));
+  return from_core(fn, Status::not_finite);
+}
+
 // The guarded path of cyc_surface_eval: argument errors, and evaluation
 // errors (status s) with their message and the error handler. Kept out of
 // line so that the hot path stays small.
@@ -499,6 +600,7 @@ int surface_eval_error(cyc_context* ctx, const cyc_surface* surface, double u, d
   return run(ctx, fn, [&] {
     REQUIRE(surface);
     if (s == Status::ok) return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
+    if (s == Status::not_finite) return bad_point(fn, "u", u, "v", v);
     return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
   });
 }
@@ -528,13 +630,15 @@ int cyc_surface_eval_batch(cyc_context* ctx, const cyc_surface* surface, const d
   return run(ctx, fn, [&] {
     REQUIRE(surface);
     if (count) REQUIRE(uv);
-    if (uv_stride < 2) return fail(CYC_E_INVALID_ARGUMENT, "%s: uv_stride < 2", fn);
+    if (uv_stride < 2)
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: uv_stride = %zu is below 2", fn, uv_stride);
     for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
                            {"du", &du}, {"dv", &dv}, {"normals", &normals}})
       if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
     const Status s = surface->surface.eval_batch(uv, uv_stride, count, strided(points),
                                                  strided(du), strided(dv),
                                                  strided(normals), singular);
+    if (s == Status::not_finite) return bad_batch(fn, uv, uv_stride, count);
     return from_core(fn, s);
   });
 }
@@ -548,14 +652,17 @@ int cyc_surface_eval_grid(cyc_context* ctx, const cyc_surface* surface, const do
     REQUIRE(surface);
     if (nu) REQUIRE(us);
     if (nv) REQUIRE(vs);
-    if (nv && nu > SIZE_MAX / nv) return fail(CYC_E_INVALID_ARGUMENT, "%s: nu*nv overflows", fn);
-    const size_t count = nu * nv;
+    size_t count = 0;
+    if (!size_product(nu, nv, count))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
+                  nu, nv);
     for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
                            {"du", &du}, {"dv", &dv}, {"normals", &normals}})
       if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
     const Status s = surface->surface.eval_grid(us, nu, vs, nv, strided(points),
                                                 strided(du), strided(dv),
                                                 strided(normals), singular);
+    if (s == Status::not_finite) return bad_grid(fn, us, nu, vs, nv);
     return from_core(fn, s);
   });
 }
@@ -565,6 +672,7 @@ int cyc_surface_circle(cyc_context* ctx, const cyc_surface* surface, double u,
   const char* fn = "cyc_surface_circle";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
+    TRY(check_double(fn, "u", u));
     REQUIRE(out);
     Vec3d c, n;
     double r2;
@@ -582,6 +690,7 @@ int cyc_surface_sphere(cyc_context* ctx, const cyc_surface* surface, double u,
   const char* fn = "cyc_surface_sphere";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
+    TRY(check_double(fn, "u", u));
     REQUIRE(out);
     Vec3d c;
     double r2;
@@ -599,6 +708,7 @@ int cyc_surface_ringed_data(cyc_context* ctx, const cyc_surface* surface, double
   const char* fn = "cyc_surface_ringed_data";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
+    TRY(check_double(fn, "u", u));
     RingedData R;
     if (Status s = surface->surface.ringed(u, R); s != Status::ok)
       return from_core_at(fn, s, u);
@@ -615,6 +725,7 @@ int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surface, doub
   const char* fn = "cyc_surface_ringed_sphere";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
+    TRY(check_double(fn, "u", u));
     REQUIRE(out);
     RingedData R;
     if (Status s = surface->surface.ringed(u, R); s != Status::ok)
@@ -622,6 +733,9 @@ int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surface, doub
     Vec3d m;
     double r2;
     if (Status s = ringed_sphere(R, m, r2); s != Status::ok) return from_core_at(fn, s, u);
+    if (!m.allFinite() || !std::isfinite(r2))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the sphere at u = %.17g overflows (n.c' is "
+                  "too small for its radius)", fn, u);
     put3(out->center, m);
     out->radius2 = r2;
     return ok();
@@ -635,7 +749,9 @@ int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface, double 
     REQUIRE(surface);
     if (!max_residual && !is_canal)
       return fail(CYC_E_NULL_ARGUMENT, "%s: no output requested", fn);
-    if (std::isnan(tolerance)) return from_core(fn, Status::not_finite);
+    // tolerance <= 0 chooses the default; NaN or beyond the input range is
+    // an error like any other double input.
+    TRY(check_double(fn, "tolerance", tolerance));
     double worst = 0;
     if (Status s = surface->surface.canal_test(worst); s != Status::ok)
       return from_core(fn, s);
@@ -651,11 +767,16 @@ int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surface, doubl
   const char* fn = "cyc_surface_parameter_of";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
+    TRY(check_double(fn, "u", u));
     REQUIRE(point);
     REQUIRE(v);
+    TRY(check_doubles(fn, "point", point, 3));
     double r;
     if (Status s = surface->surface.parameter_of(u, vec(point), r); s != Status::ok)
       return from_core_at(fn, s, u);
+    if (std::isnan(r))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the circle parameter of point is undefined "
+                  "at u = %.17g", fn, u);
     *v = r;
     return ok();
   });
@@ -671,26 +792,46 @@ static_assert(CYC_DARBOUX_QUARTIC == int(DarbouxType::quartic), "type numbers");
 
 namespace {
 
-Outcome read_darboux(const char* fn, const cyc_darboux& in, Darboux& out) {
-  for (int i = 0; i < CYC_DARBOUX_COEFFS; ++i)
-    if (!input_ok(in.k[i]))
-      return fail(CYC_E_NOT_FINITE, "%s: coefficient %d is not finite or too large", fn, i);
+// The coefficients of a Darboux equation (31), named name.k[i].
+Outcome read_darboux(const char* fn, const char* name, const cyc_darboux& in, Darboux& out) {
+  char field[48];
+  std::snprintf(field, sizeof field, "%s.k", name);
+  TRY(check_doubles(fn, field, in.k, CYC_DARBOUX_COEFFS));
   std::memcpy(out.k, in.k, sizeof out.k);
   return ok();
 }
 
+// An inversion (X - m) -> rho^2 (X - m) / |X - m|^2 at the sphere (m, rho):
+// rho must be positive.
 Outcome read_inversion(const char* fn, const cyc_inversion& in, Inversion& out) {
+  TRY(check_doubles(fn, "inv.center", in.center, 3));
+  TRY(check_double(fn, "inv.radius", in.radius));
+  if (!(in.radius > 0))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: inv.radius = %.17g is not positive: an inversion "
+                "needs a sphere of radius > 0", fn, in.radius);
   out.m = vec(in.center);
   out.rho = in.radius;
   return from_core(fn, check_inversion(out));
 }
 
-Line read_line(const cyc_line& l) { return {vec(l.point), vec(l.direction)}; }
-struct ThreeLines {  // three lines by value (a C array cannot be returned)
-  Line line[3];
-};
-ThreeLines read_lines(const cyc_line lines[3]) {
-  return {{read_line(lines[0]), read_line(lines[1]), read_line(lines[2])}};
+// A line's point and direction, named name.point, name.direction.
+Outcome read_line(const char* fn, const char* name, const cyc_line& l, Line& out) {
+  char field[48];
+  std::snprintf(field, sizeof field, "%s.point", name);
+  TRY(check_doubles(fn, field, l.point, 3));
+  std::snprintf(field, sizeof field, "%s.direction", name);
+  TRY(check_doubles(fn, field, l.direction, 3));
+  out = {vec(l.point), vec(l.direction)};
+  return ok();
+}
+// lines[0..2], named lines[i].point, lines[i].direction.
+Outcome read_lines(const char* fn, const cyc_line lines[3], Line (&out)[3]) {
+  char name[24];
+  for (int i = 0; i < 3; ++i) {
+    std::snprintf(name, sizeof name, "lines[%d]", i);
+    TRY(read_line(fn, name, lines[i], out[i]));
+  }
+  return ok();
 }
 void put_line(cyc_line& out, const Line& L) {
   put3(out.point, L.P);
@@ -718,13 +859,13 @@ int cyc_darboux_eval(cyc_context* ctx, const cyc_darboux* d, const double x[3], 
     REQUIRE(x);
     REQUIRE(value);
     Darboux D;
-    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    TRY(read_darboux(fn, "d", *d, D));
+    TRY(check_doubles(fn, "x", x, 3));
     const Vec3d X = vec(x);
-    if (!input_ok(X)) return fail(CYC_E_NOT_FINITE, "%s: x is not finite or too large", fn);
     const double v = D.value(X);
     const Vec3d g = D.gradient(X);
     if (!std::isfinite(v) || (gradient && !std::isfinite(g.sum())))
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: %s", fn, explain(Status::numerical_overflow));
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the value of d at x overflows", fn);
     *value = v;
     if (gradient) put3(gradient, g);
     return ok();
@@ -737,7 +878,7 @@ int cyc_darboux_classify(cyc_context* ctx, const cyc_darboux* d, int* type) {
     REQUIRE(d);
     REQUIRE(type);
     Darboux D;
-    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    TRY(read_darboux(fn, "d", *d, D));
     *type = int(darboux_type(D));
     return ok();
   });
@@ -751,9 +892,14 @@ int cyc_invert_point(cyc_context* ctx, const cyc_inversion* inv, const double x[
     REQUIRE(x);
     REQUIRE(out);
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
+    TRY(check_doubles(fn, "x", x, 3));
     Vec3d Y;
-    if (Status s = invert_point(I, vec(x), Y); s != Status::ok) return from_core(fn, s);
+    if (Status s = invert_point(I, vec(x), Y); s != Status::ok) {
+      if (s == Status::numerical_overflow)
+        return fail(int(s), "%s: x is so close to inv.center that its image overflows", fn);
+      return from_core(fn, s);
+    }
     put3(out, Y);
     return ok();
   });
@@ -767,10 +913,19 @@ int cyc_invert_sphere(cyc_context* ctx, const cyc_inversion* inv, const cyc_gene
     REQUIRE(s);
     REQUIRE(out);
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
+    TRY(check_double(fn, "s.a", s->a));
+    TRY(check_doubles(fn, "s.b", s->b, 3));
+    TRY(check_double(fn, "s.c", s->c));
     GeneralSphere R;
-    if (Status st = invert_sphere(I, {s->a, vec(s->b), s->c}, R); st != Status::ok)
+    if (Status st = invert_sphere(I, {s->a, vec(s->b), s->c}, R); st != Status::ok) {
+      if (st == Status::invalid_argument)
+        return fail(int(st), "%s: s.a = 0 and s.b = 0: the equation describes no sphere or "
+                    "plane", fn);
+      if (st == Status::numerical_overflow)
+        return fail(int(st), "%s: the image's coefficients overflow", fn);
       return from_core(fn, st);
+    }
     out->a = R.A;
     put3(out->b, R.B);
     out->c = R.C;
@@ -786,11 +941,23 @@ int cyc_invert_circle(cyc_context* ctx, const cyc_inversion* inv, const cyc_circ
     REQUIRE(c);
     REQUIRE(out);
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
+    TRY(check_doubles(fn, "c.point", c->point, 3));
+    TRY(check_doubles(fn, "c.axis", c->axis, 3));
+    TRY(check_double(fn, "c.radius", c->radius));
     CircleOrLine R;
     if (Status st = invert_circle(I, {c->is_line != 0, vec(c->point), vec(c->axis), c->radius}, R);
-        st != Status::ok)
+        st != Status::ok) {
+      if (st == Status::invalid_argument && !(vec(c->axis).squaredNorm() > 0))
+        return fail(int(st), "%s: c.axis is zero", fn);
+      if (st == Status::invalid_argument)
+        return fail(int(st), "%s: c.radius = %.17g is not positive", fn, c->radius);
+      if (st == Status::numerical_overflow)
+        return fail(int(st), "%s: the image is not resolved in double precision (c passes "
+                    "too close to inv.center, or the image is below the rounding of its "
+                    "center)", fn);
       return from_core(fn, st);
+    }
     put_circle_or_line(*out, R);
     return ok();
   });
@@ -804,10 +971,14 @@ int cyc_invert_darboux(cyc_context* ctx, const cyc_inversion* inv, const cyc_dar
     REQUIRE(d);
     REQUIRE(out);
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
     Darboux D, R;
-    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
-    if (Status st = invert_darboux(I, D, R); st != Status::ok) return from_core(fn, st);
+    TRY(read_darboux(fn, "d", *d, D));
+    if (Status st = invert_darboux(I, D, R); st != Status::ok) {
+      if (st == Status::numerical_overflow)
+        return fail(int(st), "%s: the inverted equation's coefficients overflow", fn);
+      return from_core(fn, st);
+    }
     put_darboux(out, R);
     return ok();
   });
@@ -822,7 +993,10 @@ int cyc_surface_eval_inverted(cyc_context* ctx, const cyc_surface* surface,
     REQUIRE(inv);
     REQUIRE(point);
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
+    TRY(check_double(fn, "u", u));
+    if (!std::isfinite(v))
+      return fail(CYC_E_NOT_FINITE, "%s: v = %.17g %s", fn, v, what_is_wrong(v));
     SurfacePoint P, R;
     const EvalOut o{P.x.data(), du ? P.du.data() : nullptr, dv ? P.dv.data() : nullptr,
                     normal ? P.normal.data() : nullptr};
@@ -846,7 +1020,8 @@ int cyc_surface_circle_inverted(cyc_context* ctx, const cyc_surface* surface,
     REQUIRE(inv);
     REQUIRE(out);
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
+    TRY(check_double(fn, "u", u));
     CircleOrLine R;
     if (Status s = inverted_circle(surface->surface, I, u, R); s != Status::ok)
       return from_core_at(fn, s, u);
@@ -866,15 +1041,18 @@ int cyc_surface_eval_grid_inverted(cyc_context* ctx, const cyc_surface* surface,
     REQUIRE(inv);
     if (nu) REQUIRE(us);
     if (nv) REQUIRE(vs);
-    if (nv && nu > SIZE_MAX / nv) return fail(CYC_E_INVALID_ARGUMENT, "%s: nu*nv overflows", fn);
-    const size_t count = nu * nv;
+    size_t count = 0;
+    if (!size_product(nu, nv, count))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
+                  nu, nv);
     for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
                            {"du", &du}, {"dv", &dv}, {"normals", &normals}})
       if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
     Inversion I;
-    if (Outcome o = read_inversion(fn, *inv, I); o.status) return o;
+    TRY(read_inversion(fn, *inv, I));
     const Status s = eval_grid_inverted(surface->surface, I, us, nu, vs, nv, strided(points),
                                         strided(du), strided(dv), strided(normals), singular);
+    if (s == Status::not_finite) return bad_grid(fn, us, nu, vs, nv);
     return from_core(fn, s);
   });
 }
@@ -886,9 +1064,10 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
     REQUIRE(lines);
     REQUIRE(base);
     REQUIRE(quadric);
-    const ThreeLines L = read_lines(lines);
+    Line L[3];
+    TRY(read_lines(fn, lines, L));
     DcmcFamily F;
-    if (Status s = dcmc(L.line, F); s != Status::ok) return from_core(fn, s);
+    if (Status s = dcmc(L, F); s != Status::ok) return from_core(fn, s);
     if (normal) put3(normal, F.n);
     put_darboux(base, F.base);
     put_darboux(quadric, F.quadric);
@@ -930,6 +1109,23 @@ void put_classification(cyc_lines_classification& out, const LinesClassification
   R.beta = C.nf.beta;
   out = R;
 }
+// The classifications' failures in their own words (seed 000 Props. 2, 8,
+// 9 and their normal forms (45), (68), (77)).
+Outcome classify_failure(const char* fn, Status s, const char* no_normal_form) {
+  switch (s) {
+    case Status::zero_tangent:
+      return fail(int(s), "%s: a direction is zero: l1.direction, or the second line's", fn);
+    case Status::parallel_lines:
+      return fail(int(s), "%s: l1 and l2 are parallel: they have no common perpendicular, so "
+                  "no normal form (45) of Prop. 2", fn);
+    case Status::no_normal_form: return fail(int(s), "%s: %s", fn, no_normal_form);
+    case Status::numerical_overflow:
+      return fail(int(s), "%s: the normal form's coefficients overflow (the inputs are "
+                  "too far apart relative to their distance from l1)", fn);
+    default: return from_core(fn, s);
+  }
+}
+
 }  // namespace
 
 int cyc_darboux_fit_points(cyc_context* ctx, const double* points, int count,
@@ -938,9 +1134,8 @@ int cyc_darboux_fit_points(cyc_context* ctx, const double* points, int count,
   return run(ctx, fn, [&] {
     REQUIRE(points);
     REQUIRE(out);
-    if (count < kMinFitPoints || count > kMaxFitPoints)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: count %d not in [%d, %d]", fn, count,
-                  kMinFitPoints, kMaxFitPoints);
+    TRY(check_range(fn, "count", count, kMinFitPoints, kMaxFitPoints));
+    TRY(check_rows(fn, "points", points, size_t(count), 3, 3));
     Vec3d X[kMaxFitPoints];
     for (int i = 0; i < count; ++i) X[i] = vec(points + 3 * i);
     DarbouxFit F;
@@ -974,11 +1169,12 @@ int cyc_classify_two_lines(cyc_context* ctx, const cyc_line* l1, const cyc_line*
     REQUIRE(l1);
     REQUIRE(l2);
     REQUIRE(out);
+    Line A, B;
+    TRY(read_line(fn, "l1", *l1, A));
+    TRY(read_line(fn, "l2", *l2, B));
     LinesClassification C;
-    if (Status s = classify_two_lines(vec(l1->point), vec(l1->direction), vec(l2->point),
-                                      vec(l2->direction), C);
-        s != Status::ok)
-      return from_core(fn, s);
+    if (Status s = classify_two_lines(A.P, A.d, B.P, B.d, C); s != Status::ok)
+      return classify_failure(fn, s, "l1 and l2 intersect: b = 0 in the normal form (45)");
     put_classification(*out, C);
     return ok();
   });
@@ -993,13 +1189,19 @@ int cyc_classify_line_element(cyc_context* ctx, const cyc_line* l1, const double
     REQUIRE(p2);
     REQUIRE(w);
     REQUIRE(out);
+    Line A;
+    TRY(read_line(fn, "l1", *l1, A));
+    TRY(check_doubles(fn, "p2", p2, 3));
+    TRY(check_doubles(fn, "w", w, 3));
     LinesClassification C;
-    if (Status s = classify_line_element(vec(l1->point), vec(l1->direction), vec(p2), vec(w), C);
-        s != Status::ok)
-      return from_core(fn, s);
+    if (Status s = classify_line_element(A.P, A.d, vec(p2), vec(w), C); s != Status::ok)
+      return classify_failure(fn, s, "p2 lies on l1, or w lies in the plane of l1 and p2: no "
+                              "normal form (68) of Prop. 8");
     Darboux N, D;
     if (implicit)
-      if (Status s = line_element_cyclide(C.nf, N, D); s != Status::ok) return from_core(fn, s);
+      if (Status s = line_element_cyclide(C.nf, N, D); s != Status::ok)
+        return fail(int(s), "%s: the implicit equation (70) in the input coordinates "
+                    "overflows", fn);
     put_classification(*out, C);
     if (implicit) put_darboux(implicit, D);
     return ok();
@@ -1014,10 +1216,14 @@ int cyc_classify_line_two_points(cyc_context* ctx, const cyc_line* l1, const dou
     REQUIRE(p2);
     REQUIRE(p3);
     REQUIRE(out);
+    Line A;
+    TRY(read_line(fn, "l1", *l1, A));
+    TRY(check_doubles(fn, "p2", p2, 3));
+    TRY(check_doubles(fn, "p3", p3, 3));
     LinesClassification C;
-    if (Status s = classify_line_two_points(vec(l1->point), vec(l1->direction), vec(p2), vec(p3), C);
-        s != Status::ok)
-      return from_core(fn, s);
+    if (Status s = classify_line_two_points(A.P, A.d, vec(p2), vec(p3), C); s != Status::ok)
+      return classify_failure(fn, s, "l1, p2 and p3 lie in one plane (or p2 on l1): no "
+                              "normal form (77) of Prop. 9");
     put_classification(*out, C);
     return ok();
   });
@@ -1031,7 +1237,7 @@ int cyc_parabolic_lines(cyc_context* ctx, const cyc_darboux* d, cyc_cyclide_line
     REQUIRE(d);
     REQUIRE(out);
     Darboux D;
-    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    TRY(read_darboux(fn, "d", *d, D));
     ParabolicLines A;
     if (Status s = parabolic_lines(D, A); s != Status::ok) return from_core(fn, s);
     cyc_cyclide_lines R;
@@ -1066,9 +1272,12 @@ int cyc_pencil_circle(cyc_context* ctx, const cyc_darboux* d, const cyc_line* li
     REQUIRE(plane_normal);
     REQUIRE(out);
     Darboux D;
-    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    TRY(read_darboux(fn, "d", *d, D));
+    Line L;
+    TRY(read_line(fn, "line", *line, L));
+    TRY(check_doubles(fn, "plane_normal", plane_normal, 3));
     CircleOrLine C;
-    const Status s = pencil_circle(D, read_line(*line), vec(plane_normal), C);
+    const Status s = pencil_circle(D, L, vec(plane_normal), C);
     if (s == Status::invalid_argument)
       return fail(int(s), "%s: the line must lie on the cyclide and in the plane", fn);
     if (s != Status::ok) return from_core(fn, s);
@@ -1084,10 +1293,11 @@ int cyc_parabolic_parameterize(cyc_context* ctx, const cyc_darboux* d, int kind,
     REQUIRE(d);
     REQUIRE(out);
     if (kind != CYC_SURFACE_PRCS && kind != CYC_SURFACE_PRRS)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: kind %d is neither CYC_SURFACE_PRCS nor "
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: kind = %d is neither CYC_SURFACE_PRCS nor "
                   "CYC_SURFACE_PRRS", fn, kind);
     Darboux D;
-    if (Outcome o = read_darboux(fn, *d, D); o.status) return o;
+    TRY(read_darboux(fn, "d", *d, D));
+    TRY(check_domain(fn, u0, u1));
     Surface S;
     PencilInput I;
     const Status s = kind == CYC_SURFACE_PRCS ? parameterize_parabolic_prcs(D, u0, u1, S, &I)
@@ -1108,9 +1318,10 @@ int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
   return run(ctx, fn, [&] {
     REQUIRE(lines);
     REQUIRE(out);
-    const ThreeLines L = read_lines(lines);
+    Line L[3];
+    TRY(read_lines(fn, lines, L));
     PrrsLinesAnalysis A;
-    if (Status s = prrs_lines_analysis(L.line, A); s != Status::ok) return from_core(fn, s);
+    if (Status s = prrs_lines_analysis(L, A); s != Status::ok) return from_core(fn, s);
     cyc_prrs_lines_analysis R;
     std::memset(&R, 0, sizeof R);
     R.coplanar_pair = A.coplanar_pair;
@@ -1138,10 +1349,11 @@ int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darbou
   return run(ctx, fn, [&] {
     REQUIRE(lines);
     REQUIRE(out);
-    const ThreeLines L = read_lines(lines);
+    Line L[3];
+    TRY(read_lines(fn, lines, L));
     Darboux D;
     double r = 0;
-    const Status s = prrs_lines_cyclide(L.line, D, &r);
+    const Status s = prrs_lines_cyclide(L, D, &r);
     if (s == Status::invalid_argument)
       return fail(int(s), "%s: l1, l2 must meet in one plane at one parameter and (55) hold", fn);
     if (s != Status::ok) return from_core(fn, s);

@@ -26,8 +26,36 @@ static_assert(CYC_MAX_IMPLICIT_PIECES == optim::kMaxImplicitPieces, "piece bound
 
 namespace {
 
-// The core's blend from the C description (validated by the core).
+// A quadric's 10 coefficients q0..q9 (named name[k]); its quadratic part
+// q0..q5 must not vanish (else it is a plane or a constant).
+Outcome check_quadric(const char* fn, const char* name, const double* q) {
+  TRY(check_doubles(fn, name, q, 10));
+  for (int k = 0; k < 6; ++k)
+    if (q[k] != 0) return ok();
+  return fail(CYC_E_INVALID_ARGUMENT, "%s: %s has a zero quadratic part (q0..q5 = 0): not a "
+              "quadric", fn, name);
+}
+
+// A plane a x + b y + c z + d (named name[k]) with a normal (a, b, c) != 0.
+Outcome check_plane(const char* fn, const char* name, const double* p) {
+  TRY(check_doubles(fn, name, p, 4));
+  if (p[0] != 0 || p[1] != 0 || p[2] != 0) return ok();
+  return fail(CYC_E_INVALID_ARGUMENT, "%s: %s has a zero normal (a, b, c): not a plane", fn,
+              name);
+}
+
+// The core's blend (73) from the C description, every field checked and
+// named (blend.f1[k], ..., blend.lambda, blend.n) before the core sees it.
 Outcome blend_of(const char* fn, const cyc_implicit_blend& c, ImplicitBlend& B) {
+  TRY(check_quadric(fn, "blend.f1", c.f1));
+  TRY(check_quadric(fn, "blend.f2", c.f2));
+  TRY(check_plane(fn, "blend.f10", c.f10));
+  TRY(check_plane(fn, "blend.f20", c.f20));
+  TRY(check_double(fn, "blend.lambda", c.lambda));
+  if (!(c.lambda > 0 && c.lambda < 1))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: blend.lambda = %.17g is not in (0, 1)", fn,
+                c.lambda);
+  TRY(check_range(fn, "blend.n", c.n, 1, kMaxImplicitExponent));
   Quadric f1, f2;
   PlaneFn g1, g2;
   Status st = make_quadric(c.f1, f1);
@@ -35,10 +63,36 @@ Outcome blend_of(const char* fn, const cyc_implicit_blend& c, ImplicitBlend& B) 
   if (st == Status::ok) st = make_plane_fn(c.f10, g1);
   if (st == Status::ok) st = make_plane_fn(c.f20, g2);
   if (st == Status::ok) st = make_implicit_blend(f1, f2, g1, g2, c.lambda, c.n, B);
+  if (st == Status::dependent_planes)
+    return fail(int(st), "%s: the bounding planes blend.f10 = 0 and blend.f20 = 0 coincide: "
+                "the blend (73) has no end circles", fn);
   return from_core(fn, st);
 }
 
-bool finite(const Vec3d& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+// The approximation's options, each field named (options.pieces, ...).
+Outcome approx_options_valid(const char* fn, const cyc_implicit_approx_options& p) {
+  TRY(check_range(fn, "options.pieces", p.pieces, 1, CYC_MAX_IMPLICIT_PIECES));
+  TRY(check_range(fn, "options.nodes", p.nodes, 2, 64));
+  TRY(check_range(fn, "options.max_iterations", p.max_iterations, 0, 10000));
+  TRY(check_range(fn, "options.error_nodes_t", p.error_nodes_t, 1, 64));
+  TRY(check_range(fn, "options.error_nodes_u", p.error_nodes_u, 4, 1024));
+  TRY(check_double(fn, "options.psi_weight", p.psi_weight));
+  TRY(check_double(fn, "options.length_min_ratio", p.length_min_ratio));
+  TRY(check_double(fn, "options.length_max_ratio", p.length_max_ratio));
+  TRY(check_double(fn, "options.function_tolerance", p.function_tolerance));
+  TRY(check_double(fn, "options.gradient_tolerance", p.gradient_tolerance));
+  TRY(check_double(fn, "options.parameter_tolerance", p.parameter_tolerance));
+  if (!(p.psi_weight >= 0))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: options.psi_weight = %.17g is negative", fn,
+                p.psi_weight);
+  if (!(p.length_min_ratio > 0))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: options.length_min_ratio = %.17g is not positive",
+                fn, p.length_min_ratio);
+  if (!(p.length_max_ratio >= p.length_min_ratio))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: options.length_max_ratio = %.17g is below "
+                "options.length_min_ratio = %.17g", fn, p.length_max_ratio, p.length_min_ratio);
+  return ok();
+}
 
 }  // namespace
 
@@ -51,9 +105,17 @@ int cyc_implicit_cylinder(cyc_context* ctx, const double point[3], const double 
     REQUIRE(point);
     REQUIRE(direction);
     REQUIRE(coeffs);
+    TRY(check_doubles(fn, "point", point, 3));
+    TRY(check_doubles(fn, "direction", direction, 3));
+    TRY(check_double(fn, "radius", radius));
+    if (!(radius > 0))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: radius = %.17g is not positive", fn, radius);
     Quadric Q;
-    if (Status st = make_cylinder(vec(point), vec(direction), radius, Q); st != Status::ok)
+    if (Status st = make_cylinder(vec(point), vec(direction), radius, Q); st != Status::ok) {
+      if (st == Status::invalid_argument)
+        return fail(int(st), "%s: direction is zero: the cylinder has no axis", fn);
       return from_core(fn, st);
+    }
     quadric_coefficients(Q, coeffs);
     return ok();
   });
@@ -66,9 +128,18 @@ int cyc_implicit_cone(cyc_context* ctx, const double apex[3], const double axis[
     REQUIRE(apex);
     REQUIRE(axis);
     REQUIRE(coeffs);
+    TRY(check_doubles(fn, "apex", apex, 3));
+    TRY(check_doubles(fn, "axis", axis, 3));
+    TRY(check_double(fn, "half_angle", half_angle));
+    if (!(half_angle > 0 && half_angle < std::acos(-1.0) / 2))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: half_angle = %.17g is not in (0, pi/2)", fn,
+                  half_angle);
     Quadric Q;
-    if (Status st = make_cone(vec(apex), vec(axis), half_angle, Q); st != Status::ok)
+    if (Status st = make_cone(vec(apex), vec(axis), half_angle, Q); st != Status::ok) {
+      if (st == Status::invalid_argument)
+        return fail(int(st), "%s: axis is zero: the cone has no axis", fn);
       return from_core(fn, st);
+    }
     quadric_coefficients(Q, coeffs);
     return ok();
   });
@@ -83,17 +154,16 @@ int cyc_implicit_blend_eval(cyc_context* ctx, const cyc_implicit_blend* blend, c
     REQUIRE(x);
     ImplicitBlend B;
     if (Outcome e = blend_of(fn, *blend, B); e.status) return e;
+    TRY(check_doubles(fn, "x", x, 3));
+    if (v) TRY(check_doubles(fn, "v", v, 3));
     const Vec3d X = vec(x);
-    if (!input_ok(X)) return fail(CYC_E_NOT_FINITE, "%s: x is not finite", fn);
-    Vec3d V = Vec3d::Zero();
-    if (v) {
-      V = vec(v);
-      if (!input_ok(V)) return fail(CYC_E_NOT_FINITE, "%s: v is not finite", fn);
-    }
+    const Vec3d V = v ? vec(v) : Vec3d::Zero();
     const BlendJet<double> J = blend_eval(B, X, v ? &V : nullptr);
     const double fv = J.grad.dot(V);
-    if (!std::isfinite(J.f) || !finite(J.grad) || !std::isfinite(fv) || !finite(J.hv))
-      return fail(CYC_E_NOT_FINITE, "%s: the value overflows at x", fn);
+    // The powers f10^(n+1), f20^(n+1) of (73) overflow far from the planes.
+    if (!std::isfinite(J.f) || !J.grad.allFinite() || !std::isfinite(fv) || !J.hv.allFinite())
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: f (73) or its derivatives overflow at x = "
+                  "(%.17g, %.17g, %.17g)", fn, X.x(), X.y(), X.z());
     if (f) *f = J.f;
     if (grad) put3(grad, J.grad);
     if (v && f_v) *f_v = fv;
@@ -113,9 +183,20 @@ int cyc_implicit_contour_points(cyc_context* ctx, const cyc_implicit_blend* blen
     REQUIRE(points);
     ImplicitBlend B;
     if (Outcome e = blend_of(fn, *blend, B); e.status) return e;
+    TRY(check_range(fn, "end", end, 0, 1));
+    TRY(check_doubles(fn, "v", v, 3));
     PlaneContourPoints P;
-    if (Status st = end_contour_points(B, end, vec(v), P); st != Status::ok)
+    if (Status st = end_contour_points(B, end, vec(v), P); st != Status::ok) {
+      if (st == Status::singular_point)
+        return fail(int(st), "%s: a contour point (%s) of end %d lies on the other bounding "
+                    "plane, where f (73) is singular", fn, end == 0 ? "77" : "78", end);
+      if (st == Status::invalid_argument)
+        return fail(int(st), "%s: the direction v is zero", fn);
       return from_core(fn, st);
+    }
+    for (int k = 0; k < P.count; ++k)
+      if (!P.points[k].allFinite())
+        return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: contour point %d is not finite", fn, k);
     for (int k = 0; k < P.count; ++k) put3(points + 3 * k, P.points[k]);
     *count = P.count;
     if (whole_circle) *whole_circle = P.whole_circle ? 1 : 0;
@@ -149,12 +230,15 @@ int cyc_optimize_implicit_blend(cyc_context* ctx, const cyc_implicit_blend* blen
     REQUIRE(v);
     REQUIRE(pieces);
     REQUIRE(count);
-#if CYCLIDE_HAVE_CERES
+    // The same validation with or without the optimizer tier.
     ImplicitBlend B;
-    if (Outcome e = blend_of(fn, *blend, B); e.status) return e;
+    TRY(blend_of(fn, *blend, B));
+    TRY(check_doubles(fn, "v", v, 9));
     cyc_implicit_approx_options p;
     cyc_implicit_approx_options_init(&p);
     if (options) p = *options;
+    TRY(approx_options_valid(fn, p));
+#if CYCLIDE_HAVE_CERES
     optim::ImplicitApproxOptions o;
     o.pieces = p.pieces;
     o.psi_weight = p.psi_weight;
@@ -172,8 +256,13 @@ int cyc_optimize_implicit_blend(cyc_context* ctx, const cyc_implicit_blend* blen
     Surface S[optim::kMaxImplicitPieces];
     int n = 0;
     optim::ImplicitApproxReport R;
-    if (Status st = optim::approximate_implicit_blend(B, V, o, S, n, R); st != Status::ok)
+    if (Status st = optim::approximate_implicit_blend(B, V, o, S, n, R); st != Status::ok) {
+      if (st == Status::invalid_argument)
+        return fail(int(st), "%s: the contour directions v[0..2] (v[0..1] with "
+                    "options.two_curves) must be nonzero and pairwise non-parallel, and each "
+                    "contour curve must join distinct end points", fn);
       return from_core(fn, st);
+    }
     if (!std::isfinite(R.omega) || !std::isfinite(R.error87))
       return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the error integral is not finite", fn);
     // All handles or none.
@@ -206,7 +295,6 @@ int cyc_optimize_implicit_blend(cyc_context* ctx, const cyc_implicit_blend* blen
     }
     return ok();
 #else
-    (void)options;
     (void)report;
     return fail(CYC_E_UNSUPPORTED, "%s: this build has no optimizer tier (Ceres)", fn);
 #endif

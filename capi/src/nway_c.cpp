@@ -17,6 +17,14 @@ static_assert(CYC_NWAY_SIDE_FACING == int(NwaySide::facing) &&
                   CYC_NWAY_SIDE_PRINTED == int(NwaySide::printed),
               "sides");
 
+namespace cyclide::capi {
+// The P-curve blend's options and bump, each field checked and named
+// (ringed_c.cpp).
+Outcome pcurve_blend_inputs(const char* fn, const char* options_name,
+                            const cyc_pcurve_blend_options* options,
+                            const cyc_directrix_bump* bump, RingedBlendOptions& o);
+}  // namespace cyclide::capi
+
 namespace {
 
 void put_report(cyc_nway_report& C, const NwayReport& R) {
@@ -50,11 +58,14 @@ void put_report(cyc_nway_report& C, const NwayReport& R) {
 
 Outcome options_of(const char* fn, const cyc_nway_options* c, int n, NwayOptions& o) {
   if (!c) return ok();
-  if (c->center != CYC_NWAY_CENTER_AUTO && c->center != CYC_NWAY_CENTER_ALPHA &&
-      c->center != CYC_NWAY_CENTER_GIVEN)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown center mode %d", fn, c->center);
-  if (c->side != CYC_NWAY_SIDE_FACING && c->side != CYC_NWAY_SIDE_PRINTED)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: unknown side %d", fn, c->side);
+  TRY(check_range(fn, "options.center", c->center, CYC_NWAY_CENTER_AUTO, CYC_NWAY_CENTER_GIVEN));
+  TRY(check_range(fn, "options.side", c->side, CYC_NWAY_SIDE_FACING, CYC_NWAY_SIDE_PRINTED));
+  TRY(check_double(fn, "options.alpha", c->alpha));
+  TRY(check_doubles(fn, "options.s", c->s, 3));
+  TRY(check_double(fn, "options.r", c->r));
+  TRY(check_double(fn, "options.r_fraction", c->r_fraction));
+  // lambda[] is read for the n ends unless chosen automatically.
+  if (!c->auto_lambda) TRY(check_doubles(fn, "options.lambda", c->lambda, size_t(n)));
   o.center = NwayCenter(c->center);
   o.alpha = c->alpha;
   o.s = vec(c->s);
@@ -65,7 +76,7 @@ Outcome options_of(const char* fn, const cyc_nway_options* c, int n, NwayOptions
   o.require_disjoint = c->require_disjoint != 0;
   o.auto_v = c->auto_v != 0;
   o.auto_lambda = c->auto_lambda != 0;
-  return pcurve_blend_options_of(fn, &c->blend, nullptr, o.blend);
+  return pcurve_blend_inputs(fn, "options.blend", &c->blend, nullptr, o.blend);
 }
 
 Outcome explain_failure(const char* fn, Status s, const NwayReport& R, const NwayOptions& o,
@@ -82,8 +93,17 @@ Outcome explain_failure(const char* fn, Status s, const NwayReport& R, const Nwa
       if (R.failed_end >= 0)
         return fail(int(s), "%s: end_u[%d] is outside the surface's domain", fn, R.failed_end);
       if (S.n > 0 && !(S.r > 0 && S.r < S.bound))
-        return fail(int(s), "%s: r = %.17g is outside (0, %.17g) (65)", fn, S.r, S.bound);
-      return fail(int(s), "%s: a lambda is outside (0, 1)", fn);
+        return fail(int(s), "%s: the sphere's radius r = %.17g (options.r, or "
+                    "options.r_fraction times the bound) is outside (0, %.17g) (65)", fn, S.r,
+                    S.bound);
+      if (!(o.r_fraction > 0 && o.r_fraction < 1))
+        return fail(int(s), "%s: options.r_fraction = %.17g is not in (0, 1)", fn,
+                    o.r_fraction);
+      for (int i = 0; i < kMaxNwayEnds; ++i)
+        if (!o.auto_lambda && !(o.lambda[i] > 0 && o.lambda[i] < 1))
+          return fail(int(s), "%s: options.lambda[%d] = %.17g is not in (0, 1)", fn, i,
+                      o.lambda[i]);
+      return fail(int(s), "%s: a joining circle's lambda is outside (0, 1)", fn);
     default:
       break;
   }
@@ -92,7 +112,6 @@ Outcome explain_failure(const char* fn, Status s, const NwayReport& R, const Nwa
       return fail(int(s), "%s: blend %d: %s (at t = %.17g)", fn, R.failed_end, explain(s), bad_u);
     return fail(int(s), "%s: end %d: %s", fn, R.failed_end, explain(s));
   }
-  (void)o;
   return from_core(fn, s);
 }
 
@@ -128,14 +147,14 @@ int cyc_blend_ringed_nway(cyc_context* ctx, const cyc_surface* const* ends, cons
       if (report) put_report(*report, R);
       return e;
     };
-    if (n < 3 || n > kMaxNwayEnds)
-      return finish(fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is outside [3, %d]", fn, n,
-                         kMaxNwayEnds));
+    // n is compared with its bound before ends and end_u are read.
+    if (Outcome e = check_range(fn, "n", n, 3, kMaxNwayEnds); e.status) return finish(e);
     const Surface* S[kMaxNwayEnds] = {};
     for (int i = 0; i < n; ++i) {
       if (!ends[i]) return fail(CYC_E_NULL_ARGUMENT, "%s: ends[%d] is NULL", fn, i);
       S[i] = &ends[i]->surface;
     }
+    if (Outcome e = check_doubles(fn, "end_u", end_u, size_t(n)); e.status) return finish(e);
     NwayOptions o;
     if (Outcome e = options_of(fn, options, n, o); e.status) return finish(e);
     // The pieces are large: build them on the heap (this is the creation tier).
@@ -179,10 +198,15 @@ int cyc_nway_sphere_create(cyc_context* ctx, const double center[3], double radi
     REQUIRE(center);
     REQUIRE(axis);
     REQUIRE(out);
+    TRY(check_doubles(fn, "center", center, 3));
+    TRY(check_double(fn, "radius", radius));
+    TRY(check_doubles(fn, "axis", axis, 3));
+    if (!(radius > 0))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: radius = %.17g is not positive", fn, radius);
     Surface S;
     if (Status s = nway_sphere_surface(vec(center), radius, vec(axis), S); s != Status::ok) {
       if (s == Status::invalid_argument)
-        return fail(int(s), "%s: radius <= 0 or axis = 0", fn);
+        return fail(int(s), "%s: axis is zero: the sphere's circles have no axis", fn);
       return from_core(fn, s);
     }
     return emit(fn, ctx, out, S);
