@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -31,29 +32,33 @@ TessellationOptions core_options(const cyc_tessellation_options& o) {
   return t;
 }
 
+// The tessellation options, every field named (the same checks as the skin
+// planner's in skin_tessellate_c.cpp). Counts are compared with their bounds
+// as 64-bit integers before any arithmetic.
 Outcome check_options(const char* fn, const cyc_tessellation_options& o) {
-  if (!(o.chordal_tolerance > 0) || beyond_input_range(o.chordal_tolerance))
-    return fail(std::isnan(o.chordal_tolerance) || std::isinf(o.chordal_tolerance)
-                    ? CYC_E_NOT_FINITE
-                    : CYC_E_INVALID_ARGUMENT,
-                "%s: chordal_tolerance = %.17g is not a positive number", fn,
-                o.chordal_tolerance);
-  if (o.min_segments < 3 || o.max_segments < o.min_segments ||
-      o.max_segments > CYC_MAX_CIRCLE_SEGMENTS)
+  TRY(check_double(fn, "options.chordal_tolerance", o.chordal_tolerance));
+  if (!(o.chordal_tolerance > 0))
     return fail(CYC_E_INVALID_ARGUMENT,
-                "%s: segments must satisfy 3 <= min_segments (%d) <= max_segments (%d) <= %d", fn,
-                o.min_segments, o.max_segments, CYC_MAX_CIRCLE_SEGMENTS);
-  if (o.fixed_segments != 0 && (o.fixed_segments < 3 || o.fixed_segments > CYC_MAX_CIRCLE_SEGMENTS))
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: fixed_segments = %d is outside 3..%d", fn,
-                o.fixed_segments, CYC_MAX_CIRCLE_SEGMENTS);
-  if (o.initial_rows < 2 || o.initial_rows > 1 << 16)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: initial_rows = %d is outside 2..65536", fn,
-                o.initial_rows);
-  for (const double* r : {o.reference_u0, o.reference_u1})
-    if (r && (beyond_input_range(r[0]) || beyond_input_range(r[1]) || beyond_input_range(r[2])))
-      return fail(CYC_E_NOT_FINITE, "%s: a reference vector is NaN, infinite or beyond 1e100",
-                  fn);
+                "%s: options.chordal_tolerance = %.17g is not positive (a distance in model "
+                "units)",
+                fn, o.chordal_tolerance);
+  TRY(check_range(fn, "options.min_segments", o.min_segments, 3, CYC_MAX_CIRCLE_SEGMENTS));
+  TRY(check_range(fn, "options.max_segments", o.max_segments, o.min_segments,
+                  CYC_MAX_CIRCLE_SEGMENTS));
+  if (o.fixed_segments != 0)
+    TRY(check_range(fn, "options.fixed_segments", o.fixed_segments, 3, CYC_MAX_CIRCLE_SEGMENTS));
+  TRY(check_range(fn, "options.initial_rows", o.initial_rows, 2, 1 << 16));
+  if (o.reference_u0) TRY(check_doubles(fn, "options.reference_u0", o.reference_u0, 3));
+  if (o.reference_u1) TRY(check_doubles(fn, "options.reference_u1", o.reference_u1, 3));
   return ok();
+}
+
+// A plan handed back to the evaluator: its sizes and phases.
+Outcome check_plan(const char* fn, const cyc_tessellation_plan& plan) {
+  TRY(check_range(fn, "plan.rows", plan.rows, 2, INT32_MAX));
+  TRY(check_range(fn, "plan.segments", plan.segments, 3, CYC_MAX_CIRCLE_SEGMENTS));
+  TRY(check_double(fn, "plan.phase0", plan.phase0));
+  return check_double(fn, "plan.phase1", plan.phase1);
 }
 
 std::size_t plan_segments(const cyc_tessellation_options& o) {
@@ -90,8 +95,8 @@ int cyc_tessellate_plan(cyc_context* ctx, const cyc_surface* surface,
     REQUIRE(us);
     REQUIRE(work);
     REQUIRE(plan);
-    if (row_cap < 2) return fail(CYC_E_INVALID_ARGUMENT, "%s: row_cap = %d < 2", fn, row_cap);
-    if (Outcome o = check_options(fn, *options); o.status) return o;
+    TRY(check_range(fn, "row_cap", row_cap, 2, INT32_MAX));
+    TRY(check_options(fn, *options));
     if (reinterpret_cast<std::uintptr_t>(work) % alignof(double) != 0)
       return fail(CYC_E_INVALID_ARGUMENT, "%s: work is not 8-byte aligned", fn);
     const std::size_t need = cyc_tessellation_workspace_size(int(plan_segments(*options)));
@@ -127,20 +132,19 @@ int cyc_tessellate_eval(cyc_context* ctx, const cyc_surface* surface,
     REQUIRE(surface);
     REQUIRE(plan);
     REQUIRE(us);
-    if (plan->rows < 2 || plan->segments < 3 || plan->segments > CYC_MAX_CIRCLE_SEGMENTS)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: plan has %d rows of %d segments", fn, plan->rows,
-                  plan->segments);
-    if (beyond_input_range(plan->phase0) || beyond_input_range(plan->phase1))
-      return fail(CYC_E_NOT_FINITE, "%s: plan phases are not finite", fn);
+    TRY(check_plan(fn, *plan));
     const Surface& S = surface->surface;
-    for (int i = 0; i < plan->rows; ++i)
-      if (!(us[i] >= S.u0 && us[i] <= S.u1))
-        return fail(std::isnan(us[i]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
-                    "%s: us[%d] = %.17g is outside the domain [%.17g, %.17g]", fn, i, us[i], S.u0,
-                    S.u1);
+    // The buffers first: rows * segments (both bounded above, no overflow in
+    // size_t) before the rows' parameters are read.
     const size_t count = size_t(plan->rows) * size_t(plan->segments);
     if (Outcome o = check_buffer(fn, "points", points, count); o.status) return o;
     if (Outcome o = check_buffer(fn, "normals", normals, count); o.status) return o;
+    TRY(check_doubles(fn, "us", us, size_t(plan->rows)));
+    for (int i = 0; i < plan->rows; ++i)
+      if (!(us[i] >= S.u0 && us[i] <= S.u1))
+        return fail(CYC_E_BAD_DOMAIN,
+                    "%s: us[%d] = %.17g is outside the domain [%.17g, %.17g]", fn, i, us[i], S.u0,
+                    S.u1);
     TessellationPlan P;
     P.rows = plan->rows;
     P.segments = plan->segments;
@@ -162,6 +166,12 @@ int cyc_bezier_export_create(cyc_context* ctx, const cyc_surface* surface,
     REQUIRE(surface);
     REQUIRE(domain);
     REQUIRE(out);
+    TRY(check_double(fn, "domain.u0", domain->u0));
+    TRY(check_double(fn, "domain.u1", domain->u1));
+    if (!domain->whole_circle) {
+      TRY(check_double(fn, "domain.v0", domain->v0));
+      TRY(check_double(fn, "domain.v1", domain->v1));
+    }
     ExportDomain D = domain->whole_circle
                          ? ExportDomain::circles(domain->u0, domain->u1)
                          : ExportDomain::rectangle(domain->u0, domain->u1, domain->v0, domain->v1);
@@ -245,8 +255,8 @@ int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int ind
     REQUIRE(e);
     REQUIRE(x);
     if (Outcome o = patch_index(fn, e, index); o.status) return o;
-    if (std::isnan(s) || std::isnan(t))
-      return fail(CYC_E_NOT_FINITE, "%s: (s, t) = (%.17g, %.17g) is not a number", fn, s, t);
+    TRY(check_double(fn, "s", s));
+    TRY(check_double(fn, "t", t));
     if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1))
       return fail(CYC_E_BAD_DOMAIN, "%s: (s, t) = (%.17g, %.17g) is outside [0, 1]^2", fn, s, t);
     const RationalBezierPatch& P = e->patches[index];
@@ -255,8 +265,17 @@ int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int ind
       return fail(CYC_E_POINT_AT_INFINITY, "%s: the weight vanishes at (%.17g, %.17g)", fn, s, t);
     put3(x, y);
     if (uv) {
-      patch_parameters(P, s, t, uv[0], uv[1]);
-      uv[0] = std::min(std::max(uv[0], P.u0), P.u1);  // u0 + s (u1 - u0) may round past u1
+      // u0 + s (u1 - u0) may round past u1: clamped. A patch with
+      // reciprocal_v reaches v = +-infinity (the generator) at an end of t,
+      // and 1/v is linear in t, so v overflows near it: reported as
+      // +-kMaxInputMagnitude (1e100), the largest circle parameter the
+      // evaluators accept, whose point differs from the generator's by a
+      // relative 1e-100 (below the rounding of any double), so (u, v) is
+      // finite and fed back to cyc_surface_eval gives the point x.
+      double u = 0, v = 0;
+      patch_parameters(P, s, t, u, v);
+      uv[0] = std::min(std::max(u, P.u0), P.u1);
+      uv[1] = std::min(std::max(v, -kMaxInputMagnitude), kMaxInputMagnitude);
     }
     return ok();
   });
@@ -265,6 +284,32 @@ int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int ind
 // ------------------------------------------------------------ writers
 
 namespace {
+
+// A grid of cyc_mesh_write: its sizes (compared as 64-bit integers, the
+// number of doubles it spans overflow-checked) and every point and normal
+// within the input range, named grids[k].points[i][c].
+Outcome check_grid(const char* fn, int k, const cyc_grid_mesh& g) {
+  char name[64];
+  std::snprintf(name, sizeof name, "grids[%d].rows", k);
+  TRY(check_range(fn, name, g.rows, 2, INT32_MAX));
+  std::snprintf(name, sizeof name, "grids[%d].cols", k);
+  TRY(check_range(fn, name, g.cols, g.closed ? 3 : 2, INT32_MAX));
+  if (g.stride < 3)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: grids[%d].stride = %zu is below 3", fn, k, g.stride);
+  size_t n = 0, span = 0;
+  if (!size_product(size_t(g.rows), size_t(g.cols), n) || !size_product(n, g.stride, span) ||
+      span > size_t(PTRDIFF_MAX) / sizeof(double))
+    return fail(CYC_E_INVALID_ARGUMENT,
+                "%s: grids[%d]: rows %d x cols %d x stride %zu doubles exceed the address space",
+                fn, k, g.rows, g.cols, g.stride);
+  std::snprintf(name, sizeof name, "grids[%d].points", k);
+  TRY(check_rows(fn, name, g.points, n, g.stride, 3));
+  if (g.normals) {
+    std::snprintf(name, sizeof name, "grids[%d].normals", k);
+    TRY(check_rows(fn, name, g.normals, n, g.stride, 3));
+  }
+  return ok();
+}
 
 // Writes through write(FILE*) into path + ".part", renamed to path on
 // success; on any failure the part file is removed and path is untouched.
@@ -309,6 +354,7 @@ int cyc_mesh_write(cyc_context* ctx, const char* path, int format, const cyc_gri
     for (int k = 0; k < count; ++k) {
       const cyc_grid_mesh& g = grids[k];
       if (!g.points) return fail(CYC_E_NULL_ARGUMENT, "%s: grids[%d].points is NULL", fn, k);
+      TRY(check_grid(fn, k, g));
       G[k].points = g.points;
       G[k].normals = g.normals;
       G[k].stride = g.stride;
@@ -324,8 +370,7 @@ int cyc_mesh_write(cyc_context* ctx, const char* path, int format, const cyc_gri
     }
     MeshWriteOptions o;
     if (options) {
-      if (std::isnan(options->weld_tolerance))
-        return fail(CYC_E_INVALID_ARGUMENT, "%s: weld_tolerance is NaN", fn);
+      TRY(check_double(fn, "options.weld_tolerance", options->weld_tolerance));
       o.weld_tolerance = options->weld_tolerance;
       o.name = options->name;
     }

@@ -13,33 +13,32 @@ using namespace cyclide::capi;
 
 namespace {
 
-bool bad(double x) { return !(std::abs(x) <= 1e100); }
-
-// The checks of cyc_tessellate_plan's options (export_c.cpp), same messages.
+// The checks of cyc_tessellate_plan's options (export_c.cpp), same messages:
+// every field named, counts compared with their bounds as 64-bit integers.
 Outcome check_options(const char* fn, const cyc_tessellation_options& o) {
-  if (!(o.chordal_tolerance > 0) || bad(o.chordal_tolerance))
-    return fail(std::isnan(o.chordal_tolerance) || std::isinf(o.chordal_tolerance)
-                    ? CYC_E_NOT_FINITE
-                    : CYC_E_INVALID_ARGUMENT,
-                "%s: chordal_tolerance = %.17g is not a positive number", fn,
-                o.chordal_tolerance);
-  if (o.min_segments < 3 || o.max_segments < o.min_segments ||
-      o.max_segments > CYC_MAX_CIRCLE_SEGMENTS)
+  TRY(check_double(fn, "options.chordal_tolerance", o.chordal_tolerance));
+  if (!(o.chordal_tolerance > 0))
     return fail(CYC_E_INVALID_ARGUMENT,
-                "%s: segments must satisfy 3 <= min_segments (%d) <= max_segments (%d) <= %d", fn,
-                o.min_segments, o.max_segments, CYC_MAX_CIRCLE_SEGMENTS);
-  if (o.fixed_segments != 0 &&
-      (o.fixed_segments < 3 || o.fixed_segments > CYC_MAX_CIRCLE_SEGMENTS))
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: fixed_segments = %d is outside 3..%d", fn,
-                o.fixed_segments, CYC_MAX_CIRCLE_SEGMENTS);
-  if (o.initial_rows < 2 || o.initial_rows > 1 << 16)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: initial_rows = %d is outside 2..65536", fn,
-                o.initial_rows);
-  for (const double* r : {o.reference_u0, o.reference_u1})
-    if (r && (bad(r[0]) || bad(r[1]) || bad(r[2])))
-      return fail(CYC_E_NOT_FINITE, "%s: a reference vector is NaN, infinite or beyond 1e100",
-                  fn);
+                "%s: options.chordal_tolerance = %.17g is not positive (a distance in model "
+                "units)",
+                fn, o.chordal_tolerance);
+  TRY(check_range(fn, "options.min_segments", o.min_segments, 3, CYC_MAX_CIRCLE_SEGMENTS));
+  TRY(check_range(fn, "options.max_segments", o.max_segments, o.min_segments,
+                  CYC_MAX_CIRCLE_SEGMENTS));
+  if (o.fixed_segments != 0)
+    TRY(check_range(fn, "options.fixed_segments", o.fixed_segments, 3, CYC_MAX_CIRCLE_SEGMENTS));
+  TRY(check_range(fn, "options.initial_rows", o.initial_rows, 2, 1 << 16));
+  if (o.reference_u0) TRY(check_doubles(fn, "options.reference_u0", o.reference_u0, 3));
+  if (o.reference_u1) TRY(check_doubles(fn, "options.reference_u1", o.reference_u1, 3));
   return ok();
+}
+
+// A plan handed back to the evaluator: its sizes and phases.
+Outcome check_plan(const char* fn, const cyc_tessellation_plan& plan) {
+  TRY(check_range(fn, "plan.rows", plan.rows, 2, INT32_MAX));
+  TRY(check_range(fn, "plan.segments", plan.segments, 3, CYC_MAX_CIRCLE_SEGMENTS));
+  TRY(check_double(fn, "plan.phase0", plan.phase0));
+  return check_double(fn, "plan.phase1", plan.phase1);
 }
 
 TessellationOptions core_options(const cyc_tessellation_options& o) {
@@ -79,8 +78,8 @@ int cyc_sphere_skin_tessellate_plan(cyc_context* ctx, const cyc_sphere_skin* ski
     REQUIRE(work);
     REQUIRE(plan);
     if (Outcome o = check_patch(fn, skin, patch); o.status) return o;
-    if (row_cap < 2) return fail(CYC_E_INVALID_ARGUMENT, "%s: row_cap = %d < 2", fn, row_cap);
-    if (Outcome o = check_options(fn, *options); o.status) return o;
+    TRY(check_range(fn, "row_cap", row_cap, 2, INT32_MAX));
+    TRY(check_options(fn, *options));
     if (reinterpret_cast<std::uintptr_t>(work) % alignof(double) != 0)
       return fail(CYC_E_INVALID_ARGUMENT, "%s: work is not 8-byte aligned", fn);
     const int n_max = options->fixed_segments > 0 ? options->fixed_segments : options->max_segments;
@@ -120,18 +119,17 @@ int cyc_sphere_skin_tessellate_eval(cyc_context* ctx, const cyc_sphere_skin* ski
     REQUIRE(plan);
     REQUIRE(ts);
     if (Outcome o = check_patch(fn, skin, patch); o.status) return o;
-    if (plan->rows < 2 || plan->segments < 3 || plan->segments > CYC_MAX_CIRCLE_SEGMENTS)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: plan has %d rows of %d segments", fn, plan->rows,
-                  plan->segments);
-    if (bad(plan->phase0) || bad(plan->phase1))
-      return fail(CYC_E_NOT_FINITE, "%s: plan phases are not finite", fn);
-    for (int i = 0; i < plan->rows; ++i)
-      if (!(ts[i] >= 0.0 && ts[i] <= 1.0))
-        return fail(std::isnan(ts[i]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
-                    "%s: ts[%d] = %.17g is outside [0, 1]", fn, i, ts[i]);
+    TRY(check_plan(fn, *plan));
+    // The buffers first: rows * segments (both bounded above, no overflow in
+    // size_t) before the rows' parameters are read.
     const size_t count = size_t(plan->rows) * size_t(plan->segments);
     if (Outcome o = check_buffer(fn, "points", points, count); o.status) return o;
     if (Outcome o = check_buffer(fn, "normals", normals, count); o.status) return o;
+    TRY(check_doubles(fn, "ts", ts, size_t(plan->rows)));
+    for (int i = 0; i < plan->rows; ++i)
+      if (!(ts[i] >= 0.0 && ts[i] <= 1.0))
+        return fail(CYC_E_BAD_DOMAIN,
+                    "%s: ts[%d] = %.17g is outside [0, 1]", fn, i, ts[i]);
     TessellationPlan P;
     P.rows = plan->rows;
     P.segments = plan->segments;

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 using namespace cyclide;
@@ -75,20 +77,43 @@ void destroy_skin(cyc_sphere_skin* h) {
   release(h);
 }
 
-Outcome options_of(const char* fn, const cyc_skin_options* o, SkinOptions& out) {
+// A skin end (cyc_skin_end), every field named: name.center[i], ...
+Outcome check_end(const char* fn, const char* name, const cyc_skin_end& e) {
+  char field[64];
+  std::snprintf(field, sizeof field, "%s.center", name);
+  TRY(check_doubles(fn, field, e.center, 3));
+  std::snprintf(field, sizeof field, "%s.radius", name);
+  TRY(check_double(fn, field, e.radius));
+  std::snprintf(field, sizeof field, "%s.tangent", name);
+  TRY(check_doubles(fn, field, e.tangent, 3));
+  std::snprintf(field, sizeof field, "%s.inv_c", name);
+  return check_double(fn, field, e.inv_c);
+}
+
+// The skin options (name: the argument, "options" or "skin"); NULL: the
+// defaults.
+Outcome options_of(const char* fn, const char* name, const cyc_skin_options* o,
+                   SkinOptions& out) {
   out = SkinOptions{};
   if (!o) return ok();
+  char field[64];
+  std::snprintf(field, sizeof field, "%s.tolerance", name);
+  TRY(check_double(fn, field, o->tolerance));
+  std::snprintf(field, sizeof field, "%s.reference", name);
+  TRY(check_doubles(fn, field, o->reference, 3));
+  std::snprintf(field, sizeof field, "%s.e", name);
+  TRY(check_doubles(fn, field, o->e, 3));
   if (o->pairing != CYC_SKIN_RMF && o->pairing != CYC_SKIN_KUNKLI_HOFFMANN &&
       o->pairing != CYC_SKIN_CROSS_TANGENTS)
     return fail(CYC_E_INVALID_ARGUMENT,
-                "%s: options->pairing = %d is not CYC_SKIN_RMF (0), CYC_SKIN_KUNKLI_HOFFMANN (1) "
+                "%s: %s.pairing = %d is not CYC_SKIN_RMF (0), CYC_SKIN_KUNKLI_HOFFMANN (1) "
                 "or CYC_SKIN_CROSS_TANGENTS (2)",
-                fn, o->pairing);
+                fn, name, o->pairing);
   if (o->method != CYC_RMF_REFERENCE && o->method != CYC_RMF_DOUBLE_REFLECTION)
     return fail(CYC_E_INVALID_ARGUMENT,
-                "%s: options->method = %d is not CYC_RMF_REFERENCE (0) or "
+                "%s: %s.method = %d is not CYC_RMF_REFERENCE (0) or "
                 "CYC_RMF_DOUBLE_REFLECTION (1)",
-                fn, o->method);
+                fn, name, o->method);
   out.pairing = SkinPairing(o->pairing);
   out.method = RmfMethod(o->method);
   out.tolerance = o->tolerance;
@@ -113,16 +138,16 @@ Outcome skin_failure(const char* fn, const char* where, Status s, const SkinEnd&
           return fail(st, "%s: %sthe %s circle's radius %.17g is not positive", fn, where,
                       names[e], ends[e]->radius);
       if (!(o.tolerance > 0))
-        return fail(st, "%s: %soptions->tolerance = %.17g is not positive", fn, where,
+        return fail(st, "%s: %soptions.tolerance = %.17g is not positive", fn, where,
                     o.tolerance);
       if (o.pairing == SkinPairing::kunkli_hoffmann ||
           (o.pairing == SkinPairing::rmf && !chained && o.reference.squaredNorm() == 0))
         return fail(st,
-                    "%s: %sthe Kunkli-Hoffmann direction e x t is undefined (options->e is "
+                    "%s: %sthe Kunkli-Hoffmann direction e x t is undefined (options.e is "
                     "parallel to a tangent)",
                     fn, where);
       return fail(st,
-                  "%s: %sthe start direction is parallel to the start tangent (options->"
+                  "%s: %sthe start direction is parallel to the start tangent (options."
                   "reference, or the previous patch's end direction)",
                   fn, where);
     case Status::zero_tangent:
@@ -197,8 +222,8 @@ Outcome patch_of(const char* fn, const cyc_sphere_skin* skin, int patch, const S
 }
 
 Outcome check_params(const char* fn, double theta, double t) {
-  if (!std::isfinite(theta) || !std::isfinite(t))
-    return fail(CYC_E_NOT_FINITE, "%s: theta = %.17g, t = %.17g: not finite", fn, theta, t);
+  TRY(check_double(fn, "theta", theta));
+  TRY(check_double(fn, "t", t));
   if (!(t >= 0.0 && t <= 1.0))
     return fail(CYC_E_BAD_DOMAIN, "%s: t = %.17g is outside [0, 1]", fn, t);
   return ok();
@@ -230,6 +255,10 @@ int cyc_skin_end_from_apex(cyc_context* ctx, const double center[3], double radi
     REQUIRE(tangent);
     REQUIRE(apex);
     REQUIRE(out);
+    TRY(check_doubles(fn, "center", center, 3));
+    TRY(check_double(fn, "radius", radius));
+    TRY(check_doubles(fn, "tangent", tangent, 3));
+    TRY(check_doubles(fn, "apex", apex, 3));
     SkinEnd e;
     const Status s = skin_end_from_apex(vec(center), radius, vec(tangent), vec(apex), e);
     if (s == Status::invalid_argument) {
@@ -256,6 +285,10 @@ int cyc_skin_end_from_sphere(cyc_context* ctx, const double sphere_center[3],
     REQUIRE(center);
     REQUIRE(tangent);
     REQUIRE(out);
+    TRY(check_doubles(fn, "sphere_center", sphere_center, 3));
+    TRY(check_double(fn, "sphere_radius", sphere_radius));
+    TRY(check_doubles(fn, "center", center, 3));
+    TRY(check_doubles(fn, "tangent", tangent, 3));
     SkinEnd e;
     const Status s =
         skin_end_from_sphere(vec(sphere_center), sphere_radius, vec(center), vec(tangent), e);
@@ -300,8 +333,10 @@ int cyc_sphere_skin_create(cyc_context* ctx, const cyc_skin_end* start, const cy
     REQUIRE(start);
     REQUIRE(end);
     REQUIRE(out);
+    TRY(check_end(fn, "start", *start));
+    TRY(check_end(fn, "end", *end));
     SkinOptions o;
-    if (Outcome r = options_of(fn, options, o); r.status) return r;
+    TRY(options_of(fn, "options", options, o));
     cyc_sphere_skin* h = allocate_skin(ctx->allocator, 1);
     if (!h) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
     const SkinEnd a = end_of(*start), b = end_of(*end);
@@ -322,8 +357,13 @@ int cyc_sphere_skin_chain_create(cyc_context* ctx, const cyc_skin_end* ends, int
     REQUIRE(ends);
     REQUIRE(out);
     if (n < 2) return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d ends; a chain needs n >= 2", fn, n);
+    for (int i = 0; i < n; ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "ends[%d]", i);
+      TRY(check_end(fn, name, ends[i]));
+    }
     SkinOptions o;
-    if (Outcome r = options_of(fn, options, o); r.status) return r;
+    TRY(options_of(fn, "options", options, o));
     cyc_sphere_skin* h = allocate_skin(ctx->allocator, n - 1);
     if (!h) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL (%d patches)", fn, n - 1);
     // The core converts the ends itself: they are read in place.
@@ -393,14 +433,11 @@ int cyc_sphere_skin_eval_grid(cyc_context* ctx, const cyc_sphere_skin* skin, int
     REQUIRE(t);
     const SphereSkin* S = nullptr;
     if (Outcome r = patch_of(fn, skin, patch, S); r.status) return r;
-    if (ntheta < 0 || nt < 0)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: ntheta = %d, nt = %d: negative", fn, ntheta, nt);
-    for (int i = 0; i < ntheta; ++i)
-      if (!std::isfinite(theta[i]))
-        return fail(CYC_E_NOT_FINITE, "%s: theta[%d] = %.17g is not finite", fn, i, theta[i]);
+    TRY(check_range(fn, "ntheta", ntheta, 0, INT32_MAX));
+    TRY(check_range(fn, "nt", nt, 0, INT32_MAX));
+    TRY(check_doubles(fn, "theta", theta, size_t(ntheta)));
+    TRY(check_doubles(fn, "t", t, size_t(nt)));
     for (int j = 0; j < nt; ++j) {
-      if (!std::isfinite(t[j]))
-        return fail(CYC_E_NOT_FINITE, "%s: t[%d] = %.17g is not finite", fn, j, t[j]);
       if (!(t[j] >= 0.0 && t[j] <= 1.0))
         return fail(CYC_E_BAD_DOMAIN, "%s: t[%d] = %.17g is outside [0, 1]", fn, j, t[j]);
     }
@@ -444,8 +481,7 @@ int cyc_sphere_skin_twist(cyc_context* ctx, const cyc_sphere_skin* skin, int pat
     REQUIRE(twist);
     const SphereSkin* S = nullptr;
     if (Outcome r = patch_of(fn, skin, patch, S); r.status) return r;
-    if (!std::isfinite(theta))
-      return fail(CYC_E_NOT_FINITE, "%s: theta = %.17g is not finite", fn, theta);
+    TRY(check_double(fn, "theta", theta));
     double w = 0;
     if (Status s = skin_twist(*S, theta, w); s != Status::ok) {
       if (s == Status::singular_point)
@@ -500,11 +536,18 @@ int cyc_sphere_skin_export_create(cyc_context* ctx, const cyc_sphere_skin* skin,
       o.tolerance = options->tolerance;
       o.degree = options->degree;
     }
-    if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance) || o.degree < 1 ||
-        o.degree > kMaxSkinExportDegree)
+    TRY(check_double(fn, "options.tolerance", o.tolerance));
+    if (!(o.tolerance > 0.0))
       return fail(CYC_E_INVALID_ARGUMENT,
-                  "%s: tolerance = %.17g must be positive and finite, degree = %d in 1..%d", fn,
-                  o.tolerance, o.degree, kMaxSkinExportDegree);
+                  "%s: options.tolerance = %.17g is not positive (a distance in model units)",
+                  fn, o.tolerance);
+    TRY(check_range(fn, "options.degree", o.degree, 1, kMaxSkinExportDegree));
+    TRY(check_double(fn, "domain.u0", domain->u0));
+    TRY(check_double(fn, "domain.u1", domain->u1));
+    if (!domain->whole_circle) {
+      TRY(check_double(fn, "domain.v0", domain->v0));
+      TRY(check_double(fn, "domain.v1", domain->v1));
+    }
     const ExportDomain D =
         domain->whole_circle
             ? ExportDomain::circles(domain->u0, domain->u1)
@@ -570,13 +613,16 @@ int cyc_optimize_skin_tangents(cyc_context* ctx, const cyc_skin_end* start,
     REQUIRE(start_out);
     REQUIRE(end_out);
 #if CYCLIDE_HAVE_CERES
+    TRY(check_end(fn, "start", *start));
+    TRY(check_end(fn, "end", *end));
     SkinOptions o;
-    if (Outcome r = options_of(fn, skin, o); r.status) return r;
+    TRY(options_of(fn, "skin", skin, o));
     cyc_skin_tangent_options p;
     cyc_skin_tangent_options_init(&p);
     if (options) p = *options;
-    if (!std::isfinite(p.target) || !std::isfinite(p.min_ratio) || !std::isfinite(p.max_ratio))
-      return fail(CYC_E_NOT_FINITE, "%s: options: target, min_ratio or max_ratio not finite", fn);
+    TRY(check_double(fn, "options.target", p.target));
+    TRY(check_double(fn, "options.min_ratio", p.min_ratio));
+    TRY(check_double(fn, "options.max_ratio", p.max_ratio));
     if (!(p.target > 0 && p.target < 1) || !(p.min_ratio > 0 && p.min_ratio <= 1) ||
         !(p.max_ratio >= 1) || p.max_iterations < 0)
       return fail(CYC_E_INVALID_ARGUMENT,

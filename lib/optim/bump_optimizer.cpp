@@ -93,22 +93,34 @@ struct BumpCost {
   }
 };
 
-Status check(const RingedBlendOptions& blend, const BumpObjective& o, const BumpOptions& p) {
+// Every input within the core's range |x| <= kMaxInputMagnitude (so the
+// boxes +-w_bound L and every residual stay finite), then the ranges.
+bool jet_ok(const RingedJet& j) {
+  return input_ok(j.d) && input_ok(j.dd) && input_ok(j.n) && input_ok(j.dn) && input_ok(j.rho) &&
+         input_ok(j.drho);
+}
+
+Status check(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& blend,
+             const BumpObjective& o, const BumpOptions& p) {
+  if (!jet_ok(a) || !jet_ok(b)) return Status::not_finite;
   for (double x : {o.deviance, o.clearance, o.obstacle_weight, p.w_bound, p.tau_min, p.tau_max,
                    p.function_tolerance, p.gradient_tolerance, p.parameter_tolerance})
-    if (!std::isfinite(x)) return Status::not_finite;
-  if (!input_ok(blend.bump.w) || !std::isfinite(blend.bump.tau)) return Status::not_finite;
+    if (!input_ok(x)) return Status::not_finite;
+  if (!input_ok(blend.bump.w) || !input_ok(blend.bump.tau) || !input_ok(blend.tau) ||
+      !input_ok(blend.v))
+    return Status::not_finite;
   if (o.deviance < 0 || o.clearance < 0 || o.obstacle_weight < 0) return Status::invalid_argument;
   if (o.nodes < 4 || o.nodes > 1024 || o.obstacle_count < 0 ||
       (o.obstacle_count > 0 && !o.obstacles))
     return Status::invalid_argument;
   for (int i = 0; i < o.obstacle_count; ++i) {
-    if (!input_ok(o.obstacles[i].center) || !std::isfinite(o.obstacles[i].radius))
+    if (!input_ok(o.obstacles[i].center) || !input_ok(o.obstacles[i].radius))
       return Status::not_finite;
     if (o.obstacles[i].radius < 0) return Status::invalid_argument;
   }
   if (!(p.w_bound > 0) || !(p.tau_min > 0) || !(p.tau_max < 1) || p.tau_min > p.tau_max ||
-      p.max_iterations < 0)
+      p.max_iterations < 0 || p.function_tolerance < 0 || p.gradient_tolerance < 0 ||
+      p.parameter_tolerance < 0)
     return Status::invalid_argument;
   if (blend.tau != 0.0 && blend.bump.kind == BumpKind::two_piece && p.free_tau)
     return Status::invalid_argument;
@@ -182,7 +194,7 @@ double ends_length(const RingedJet& a, const RingedJet& b) {
 Status describe_bump_parameters(const RingedJet& a, const RingedJet& b,
                                 const RingedBlendOptions& blend, const BumpObjective& objective,
                                 const BumpOptions& options, FreeParameters& out) {
-  if (Status st = check(blend, objective, options); st != Status::ok) return st;
+  if (Status st = check(a, b, blend, objective, options); st != Status::ok) return st;
   const double L = ends_length(a, b);
   if (!(L > 0) || !std::isfinite(L)) return Status::invalid_argument;
   bump_parameters(blend.bump, options, L, out);
@@ -194,7 +206,7 @@ Status optimize_pcurve_bump(const RingedJet& a, const RingedJet& b,
                             const BumpOptions& options, Surface (&pieces)[2], int& count,
                             DirectrixBump& chosen, BlendSummary& summary) {
   const auto clock0 = std::chrono::steady_clock::now();
-  if (Status st = check(blend, objective, options); st != Status::ok) return st;
+  if (Status st = check(a, b, blend, objective, options); st != Status::ok) return st;
   std::vector<Node> nodes;
   if (Status st = sample_nodes(a, b, blend, objective.nodes, nodes); st != Status::ok) return st;
   const double L = ends_length(a, b);

@@ -787,8 +787,10 @@ Status skin_eval_grid(const SphereSkin& S, const double* theta, int ntheta, cons
       }
     }
   std::size_t bad = 0;
-  for (int i0 = 0; i0 < ntheta; i0 += kBlock) {
-    const int m = std::min(kBlock, ntheta - i0);
+  // i0 advances by the block's own size m <= ntheta - i0, so it never
+  // passes ntheta (no int overflow for any count).
+  for (int i0 = 0, m = 0; i0 < ntheta; i0 += m) {
+    m = std::min(kBlock, ntheta - i0);
     for (int i = 0; i < m; ++i) g[i] = theta_trig(S, theta[i0 + i]);
     for (int j = 0; j < nt; ++j) {
       const SkinColumn c = column(S, t[j]);

@@ -1,1 +1,7 @@
 # cyclide_hardening_test(...) entries of this family (see CMakeLists.txt).
+cyclide_hardening_test(test_hardening_export_inputs SOURCES export_inputs_test.cpp
+                       LABELS export;skin;capi C_API)
+if(CYCLIDE_HAVE_CERES)
+  cyclide_hardening_test(test_hardening_optim_inputs SOURCES optim_inputs_test.cpp
+                         LABELS optim;capi C_API)
+endif()
