@@ -383,10 +383,12 @@ TEST(Optimizer, RegressionDenormalLambdaNeverBecomesTheDefault) {
   }
 }
 
-// Regression (fuzz_blend regress-optimize-huge-clearance): valid but huge
-// objective numbers overflow the cost at a valid start blend; that was
-// reported as CYC_E_DEPENDENT_PLANES (even for a ringed blend), now
-// CYC_E_NUMERICAL_OVERFLOW. Moderate ones still optimize.
+// Regression (fuzz_blend regress-optimize-huge-clearance): huge objective
+// numbers overflowed the cost at a valid start blend and were reported as
+// CYC_E_DEPENDENT_PLANES (even for a ringed blend). Beyond the input range
+// (|x| > 1e100) they are refused as CYC_E_NOT_FINITE naming the field; at
+// the range's edge the cost stays finite (or is CYC_E_NUMERICAL_OVERFLOW),
+// never a geometric status. Moderate ones still optimize.
 TEST(Optimizer, RegressionObjectiveOverflowIsNotDependentPlanes) {
   Fig6 f;
   cyc_blend_objective o;
@@ -399,12 +401,20 @@ TEST(Optimizer, RegressionObjectiveOverflowIsNotDependentPlanes) {
   cyc_optimize_options p;
   cyc_optimize_options_init(&p);
   p.max_iterations = 2;
-  for (double clearance : {1e300, 0.5}) {
+  for (double clearance : {1e300, 1e100, 0.5}) {
     o.clearance = clearance;
     cyc_surface* X = nullptr;
     const int st = cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, &o, &p, &X,
                                       nullptr, nullptr, nullptr);
-    EXPECT_EQ(st, clearance > 1 ? CYC_E_NUMERICAL_OVERFLOW : CYC_OK) << clearance;
+    if (clearance > 1e100) {
+      EXPECT_EQ(st, CYC_E_NOT_FINITE);
+      EXPECT_NE(std::strstr(cyc_context_last_error(f.ctx), "objective.clearance"), nullptr)
+          << cyc_context_last_error(f.ctx);
+    } else if (clearance > 1) {
+      EXPECT_TRUE(st == CYC_OK || st == CYC_E_NUMERICAL_OVERFLOW) << st;
+    } else {
+      EXPECT_EQ(st, CYC_OK) << clearance;
+    }
     cyc_surface_destroy(f.ctx, X);
   }
   o.clearance = 0;
@@ -412,7 +422,8 @@ TEST(Optimizer, RegressionObjectiveOverflowIsNotDependentPlanes) {
   cyc_surface* X = reinterpret_cast<cyc_surface*>(&o);  // untouched on error
   EXPECT_EQ(cyc_optimize_blend(f.ctx, CYC_BLEND_RINGED, &f.s, &f.e, 1, 0, 1, &o, &p, &X, nullptr,
                                nullptr, nullptr),
-            CYC_E_NUMERICAL_OVERFLOW);
+            CYC_E_NOT_FINITE);
+  EXPECT_NE(std::strstr(cyc_context_last_error(f.ctx), "objective.fairness"), nullptr);
   EXPECT_EQ(X, reinterpret_cast<cyc_surface*>(&o));
 }
 
