@@ -62,20 +62,32 @@ void put6(double* dst, const Lie6d& v) {
   for (int i = 0; i < 6; ++i) dst[i] = v[i];
 }
 
-bool finite_n(const double* x, int n) {
-  for (int i = 0; i < n; ++i)
-    if (!std::isfinite(x[i])) return false;
-  return true;
-}
+// "prefix" + "field", for the messages of struct fields (e.g.
+// "spheres[1]" + ".rho").
+struct FieldName {
+  char text[64];
+  FieldName(const char* prefix, const char* field) {
+    std::snprintf(text, sizeof text, "%s%s", prefix, field);
+  }
+  operator const char*() const { return text; }
+};
 
 const char* kind_names = "CYC_LIE_SPHERE (1), CYC_LIE_POINT (2), CYC_LIE_PLANE (3) or "
                          "CYC_LIE_POINT_AT_INFINITY (4)";
 
-// A C Lie sphere as the core's (kind checked; the fields are not).
+// A C Lie sphere as the core's: its kind, then the fields of that kind
+// (the others are not read), each through the shared input checks.
 Outcome sphere_in(const char* fn, const char* name, const cyc_lie_sphere& s, LieSphere& out) {
   if (s.kind < CYC_LIE_SPHERE || s.kind > CYC_LIE_POINT_AT_INFINITY)
     return fail(CYC_E_INVALID_ARGUMENT, "%s: %s.kind = %d is not %s", fn, name, s.kind,
                 kind_names);
+  if (s.kind == CYC_LIE_SPHERE || s.kind == CYC_LIE_POINT)
+    TRY(check_doubles(fn, FieldName(name, ".m"), s.m, 3));
+  if (s.kind == CYC_LIE_SPHERE) TRY(check_double(fn, FieldName(name, ".rho"), s.rho));
+  if (s.kind == CYC_LIE_PLANE) {
+    TRY(check_doubles(fn, FieldName(name, ".n"), s.n, 3));
+    TRY(check_double(fn, FieldName(name, ".lambda"), s.lambda));
+  }
   LieSphere L;
   L.kind = LieSphereKind(s.kind);
   L.m = vec(s.m);
@@ -111,9 +123,7 @@ Outcome vector_of(const char* fn, const char* name, const cyc_lie_sphere& s, Lie
   if (Outcome r = sphere_in(fn, name, s, L); r.status) return r;
   const Status st = lie_vector(L, x);
   if (st == Status::invalid_argument)
-    return fail(int(st), "%s: %s is a plane with normal n = 0", fn, name);
-  if (st == Status::not_finite)
-    return fail(int(st), "%s: %s has a NaN or infinite field of its kind", fn, name);
+    return fail(int(st), "%s: %s is a plane with normal %s.n = 0", fn, name, name);
   if (st == Status::numerical_overflow)
     return fail(int(st), "%s: %s's representative overflows (|m|^2 or rho^2 beyond double)", fn,
                 name);
@@ -136,14 +146,10 @@ Outcome sphere_out(const char* fn, const Lie6d& x, cyc_lie_sphere* out) {
 }
 
 Outcome vectors_in(const char* fn, const char* name, const double* v, int k, Lie6d* out) {
-  if (k < 0 || k > 6)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: k = %d is outside 0..6", fn, k);
+  TRY(check_range(fn, "k", k, 0, 6));
   if (k > 0 && !v) return fail(CYC_E_NULL_ARGUMENT, "%s: %s is NULL", fn, name);
-  for (int i = 0; i < k; ++i) {
-    if (!finite_n(v + 6 * i, 6))
-      return fail(CYC_E_NOT_FINITE, "%s: %s vector %d has a NaN or infinite entry", fn, name, i);
-    out[i] = lie6(v + 6 * i);
-  }
+  if (k > 0) TRY(check_rows(fn, name, v, size_t(k), 6, 6));  // name[i][j]: vector i
+  for (int i = 0; i < k; ++i) out[i] = lie6(v + 6 * i);
   return ok();
 }
 
@@ -156,8 +162,7 @@ void put_signature(int* out, const Signature& s) {
 // ------------------------------------------------------------ transforms
 
 Outcome transform_in(const char* fn, const char* name, const cyc_lie_transform* T, Matrix6d& M) {
-  if (!finite_n(T->m, 36))
-    return fail(CYC_E_NOT_FINITE, "%s: %s has a NaN or infinite entry", fn, name);
+  TRY(check_doubles(fn, FieldName(name, ".m"), T->m, 36));  // name.m[6 i + j]: entry (i, j)
   M = from_row_major(T->m);
   return ok();
 }
@@ -173,15 +178,14 @@ double max_abs(const Matrix6d& M) { return M.cwiseAbs().maxCoeff(); }
 
 // ------------------------------------------------------------ Dupin values
 
-// Whether theta is a valid stored cyclide; the reason in `why` otherwise.
-// Status: ok, not_finite or invalid_argument.
+// Whether theta (entries within the input range) is a valid stored
+// cyclide; the reason in `why` otherwise. Status: ok, not_finite or
+// invalid_argument.
 int check_theta(const Matrix6d& theta, char* why, size_t n) {
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j)
-      if (!std::isfinite(theta(i, j))) {
-        std::snprintf(why, n, "theta[%d] = %.17g is not finite", 6 * i + j, theta(i, j));
-        return CYC_E_NOT_FINITE;
-      }
+  if (!theta.allFinite()) {
+    std::snprintf(why, n, "theta has an entry that is not finite");
+    return CYC_E_NOT_FINITE;
+  }
   const double big = max_abs(theta);
   if (!(big <= kMaxTheta)) {
     std::snprintf(why, n, "max|theta| = %.3g is beyond 1e100", big);
@@ -200,28 +204,27 @@ int check_theta(const Matrix6d& theta, char* why, size_t n) {
   return CYC_OK;
 }
 
-// A caller's cyc_dupin as the core's, validated.
-Outcome dupin_in(const char* fn, const cyc_dupin* c, DupinCyclide& D) {
+// A caller's cyc_dupin as the core's, validated; prefix names it in
+// messages ("cyclide.", "blend.piece[1].").
+Outcome dupin_in(const char* fn, const char* prefix, const cyc_dupin* c, DupinCyclide& D) {
+  TRY(check_doubles(fn, FieldName(prefix, "theta"), c->theta, 36));
+  TRY(check_doubles(fn, FieldName(prefix, "origin"), c->origin, 3));
   const Matrix6d theta = from_row_major(c->theta);
   char why[256];
   if (const int st = check_theta(theta, why, sizeof why); st != CYC_OK)
-    return fail(st, "%s: cyclide: %s", fn, why);
+    return fail(st, "%s: %s%s", fn, prefix, why);
   if (c->type < CYC_DUPIN_DEGENERATE || c->type > CYC_DUPIN_QUARTIC)
     return fail(CYC_E_INVALID_ARGUMENT,
-                "%s: cyclide->type = %d is not CYC_DUPIN_DEGENERATE (1), CYC_DUPIN_PARABOLIC "
+                "%s: %stype = %d is not CYC_DUPIN_DEGENERATE (1), CYC_DUPIN_PARABOLIC "
                 "(2) or CYC_DUPIN_QUARTIC (3)",
-                fn, c->type);
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(c->origin[i]))
-      return fail(CYC_E_NOT_FINITE, "%s: cyclide->origin[%d] = %.17g is not finite", fn, i,
-                  c->origin[i]);
+                fn, prefix, c->type);
   DupinCyclide E;
   E.theta = theta;
   E.type = dupin_laguerre_type(E);
   E.origin = vec(c->origin);
   if (int(E.type) != c->type)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: cyclide->type = %d, but theta's Laguerre class is %d",
-                fn, c->type, int(E.type));
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: %stype = %d, but %stheta's Laguerre class is %d",
+                fn, prefix, c->type, prefix, int(E.type));
   D = E;
   return ok();
 }
@@ -261,6 +264,30 @@ Outcome eval_failure(const char* fn, Status s, double xi, double zeta) {
     case Status::numerical_overflow:
       return fail(int(s), "%s: values overflow at xi = %.17g, zeta = %.17g", fn, xi, zeta);
     default: return from_core(fn, s);
+  }
+}
+
+// A Dupin cyclide's view as a circle-family surface could not be built
+// (make_dupin_surface scans the domain; bad_u is where it failed).
+Outcome dupin_scan_failure(const char* fn, Status s, double bad_u) {
+  switch (s) {
+    case Status::invalid_argument:
+      return fail(int(s), "%s: xi_map or zeta_map is degenerate (a d - b c = 0 to 1e-12 "
+                          "relative): not a Mobius map", fn);
+    case Status::bad_domain:
+      return fail(int(s), "%s: the parameter interval is empty or reversed", fn);
+    case Status::point_at_infinity:
+      return fail(int(s), "%s: at u = %.17g the circle of the first family passes through "
+                          "infinity (its sphere a(xi(u)) is a plane)", fn, bad_u);
+    case Status::singular_point:
+      return fail(int(s), "%s: at u = %.17g the circle of the first family shrinks to a point",
+                  fn, bad_u);
+    case Status::degenerate_circle_parameter:
+      return fail(int(s), "%s: at u = %.17g the circle's parameter zeta is not a Mobius map of "
+                          "the angle (the three circle points coincide)", fn, bad_u);
+    case Status::numerical_overflow:
+      return fail(int(s), "%s: the circles overflow at u = %.17g", fn, bad_u);
+    default: return from_core_at(fn, s, bad_u);
   }
 }
 
@@ -312,7 +339,7 @@ int cyc_lie_sphere_of(cyc_context* ctx, const double x[6], cyc_lie_sphere* out) 
   return run(ctx, fn, [&] {
     REQUIRE(x);
     REQUIRE(out);
-    if (!finite_n(x, 6)) return fail(CYC_E_NOT_FINITE, "%s: x has a NaN or infinite entry", fn);
+    TRY(check_doubles(fn, "x", x, 6));
     return sphere_out(fn, lie6(x), out);
   });
 }
@@ -323,8 +350,8 @@ int cyc_lie_dot(cyc_context* ctx, const double x[6], const double y[6], double* 
     REQUIRE(x);
     REQUIRE(y);
     REQUIRE(out);
-    if (!finite_n(x, 6) || !finite_n(y, 6))
-      return fail(CYC_E_NOT_FINITE, "%s: x or y has a NaN or infinite entry", fn);
+    TRY(check_doubles(fn, "x", x, 6));
+    TRY(check_doubles(fn, "y", y, 6));
     const double d = lie_dot(lie6(x), lie6(y));
     if (!std::isfinite(d))
       return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the product overflows", fn);
@@ -340,8 +367,9 @@ int cyc_lie_in_contact(cyc_context* ctx, const double x[6], const double y[6], d
     REQUIRE(x);
     REQUIRE(y);
     REQUIRE(contact);
-    if (!finite_n(x, 6) || !finite_n(y, 6) || !std::isfinite(tol))
-      return fail(CYC_E_NOT_FINITE, "%s: x, y or tol is NaN or infinite", fn);
+    TRY(check_doubles(fn, "x", x, 6));
+    TRY(check_doubles(fn, "y", y, 6));
+    TRY(check_double(fn, "tol", tol));
     if (!(tol >= 0)) return fail(CYC_E_INVALID_ARGUMENT, "%s: tol = %.17g < 0", fn, tol);
     const Lie6d a = lie6(x), b = lie6(y);
     // |x . y| <= tol |x| |y| with the norms' product kept from overflowing.
@@ -396,6 +424,11 @@ int cyc_lie_complement_signature(cyc_context* ctx, const int signature[3], int o
   return run(ctx, fn, [&] {
     REQUIRE(signature);
     REQUIRE(out);
+    // Each count against its own bound first (p, r <= 4, q, r <= 2), so
+    // that the sums of signature_exists cannot overflow.
+    TRY(check_range(fn, "signature[0] (p)", signature[0], 0, 4));
+    TRY(check_range(fn, "signature[1] (r)", signature[1], 0, 2));
+    TRY(check_range(fn, "signature[2] (q)", signature[2], 0, 2));
     const Signature s{signature[0], signature[1], signature[2]};
     if (!signature_exists(s))
       return fail(CYC_E_INVALID_ARGUMENT,
@@ -414,7 +447,7 @@ int cyc_lie_witt_extension(cyc_context* ctx, const double* u, const double* w, i
     REQUIRE(u);
     REQUIRE(w);
     REQUIRE(T);
-    if (k < 1 || k > 6) return fail(CYC_E_INVALID_ARGUMENT, "%s: k = %d is outside 1..6", fn, k);
+    TRY(check_range(fn, "k", k, 1, 6));
     Lie6d a[6], b[6];
     if (Outcome r = vectors_in(fn, "u", u, k, a); r.status) return r;
     if (Outcome r = vectors_in(fn, "w", w, k, b); r.status) return r;
@@ -444,7 +477,7 @@ int cyc_lie_transform_translation(cyc_context* ctx, const double t[3], cyc_lie_t
   return run(ctx, fn, [&] {
     REQUIRE(t);
     REQUIRE(out);
-    if (!finite_n(t, 3)) return fail(CYC_E_NOT_FINITE, "%s: t is not finite", fn);
+    TRY(check_doubles(fn, "t", t, 3));
     return transform_out(fn, lie_translation(vec(t)), out);
   });
 }
@@ -454,7 +487,7 @@ int cyc_lie_transform_rotation(cyc_context* ctx, const double R[9], cyc_lie_tran
   return run(ctx, fn, [&] {
     REQUIRE(R);
     REQUIRE(out);
-    if (!finite_n(R, 9)) return fail(CYC_E_NOT_FINITE, "%s: R is not finite", fn);
+    TRY(check_doubles(fn, "R", R, 9));
     const Eigen::Matrix3d M = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(R);
     const double residual =
         (M.transpose() * M - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
@@ -469,7 +502,7 @@ int cyc_lie_transform_scaling(cyc_context* ctx, double s, cyc_lie_transform* out
   const char* fn = "cyc_lie_transform_scaling";
   return run(ctx, fn, [&] {
     REQUIRE(out);
-    if (!std::isfinite(s)) return fail(CYC_E_NOT_FINITE, "%s: s = %.17g is not finite", fn, s);
+    TRY(check_double(fn, "s", s));
     if (!(s > 0)) return fail(CYC_E_INVALID_ARGUMENT, "%s: s = %.17g is not positive", fn, s);
     return transform_out(fn, lie_scaling(s), out);
   });
@@ -479,7 +512,7 @@ int cyc_lie_transform_dilatation(cyc_context* ctx, double d, cyc_lie_transform* 
   const char* fn = "cyc_lie_transform_dilatation";
   return run(ctx, fn, [&] {
     REQUIRE(out);
-    if (!std::isfinite(d)) return fail(CYC_E_NOT_FINITE, "%s: d = %.17g is not finite", fn, d);
+    TRY(check_double(fn, "d", d));
     return transform_out(fn, lie_dilatation(d), out);
   });
 }
@@ -490,8 +523,8 @@ int cyc_lie_transform_inversion(cyc_context* ctx, const double center[3], double
   return run(ctx, fn, [&] {
     REQUIRE(center);
     REQUIRE(out);
-    if (!finite_n(center, 3) || !std::isfinite(radius))
-      return fail(CYC_E_NOT_FINITE, "%s: center or radius is not finite", fn);
+    TRY(check_doubles(fn, "center", center, 3));
+    TRY(check_double(fn, "radius", radius));
     if (!(radius > 0))
       return fail(CYC_E_INVALID_ARGUMENT, "%s: radius = %.17g is not positive", fn, radius);
     return transform_out(fn, lie_inversion(vec(center), radius), out);
@@ -591,9 +624,10 @@ int cyc_dupin_from_spheres(cyc_context* ctx, const cyc_lie_sphere spheres[3], cy
     if (Outcome r = triple_in(fn, spheres, a); r.status) return r;  // validation
     // The spheres themselves, so that the core moves them to its local
     // origin before forming (4) (SPEC §8h.3).
+    static const char* names[3] = {"spheres[0]", "spheres[1]", "spheres[2]"};
     LieSphere L[3];
     for (int i = 0; i < 3; ++i)
-      if (Outcome r = sphere_in(fn, "spheres[i]", spheres[i], L[i]); r.status) return r;
+      if (Outcome r = sphere_in(fn, names[i], spheres[i], L[i]); r.status) return r;
     DupinCyclide D;
     if (Status s = dupin_from_spheres(L, D); s != Status::ok) return triple_failure(fn, s);
     return dupin_out(fn, D, out);
@@ -605,7 +639,7 @@ int cyc_dupin_from_vectors(cyc_context* ctx, const double a[18], cyc_dupin* out)
   return run(ctx, fn, [&] {
     REQUIRE(a);
     REQUIRE(out);
-    if (!finite_n(a, 18)) return fail(CYC_E_NOT_FINITE, "%s: a has a NaN or infinite entry", fn);
+    TRY(check_rows(fn, "a", a, 3, 6, 6));  // a[i][j]: vector i
     const Lie6d v[3] = {lie6(a), lie6(a + 6), lie6(a + 12)};
     DupinCyclide D;
     if (Status s = dupin_from_vectors(v, D); s != Status::ok) return triple_failure(fn, s);
@@ -619,7 +653,7 @@ int cyc_dupin_from_subspace(cyc_context* ctx, const double* span, int k, cyc_dup
   return run(ctx, fn, [&] {
     REQUIRE(span);
     REQUIRE(out);
-    if (k < 3 || k > 6) return fail(CYC_E_INVALID_ARGUMENT, "%s: k = %d is outside 3..6", fn, k);
+    TRY(check_range(fn, "k", k, 3, 6));
     Lie6d v[6];
     if (Outcome r = vectors_in(fn, "span", span, k, v); r.status) return r;
     DupinCyclide D;
@@ -643,7 +677,7 @@ int cyc_dupin_swap_families(cyc_context* ctx, const cyc_dupin* in, cyc_dupin* ou
     REQUIRE(in);
     REQUIRE(out);
     DupinCyclide D;
-    if (Outcome r = dupin_in(fn, in, D); r.status) return r;
+    if (Outcome r = dupin_in(fn, "in.", in, D); r.status) return r;
     return dupin_out(fn, swap_families(D), out);
   });
 }
@@ -654,8 +688,8 @@ int cyc_dupin_offset(cyc_context* ctx, const cyc_dupin* in, double d, cyc_dupin*
     REQUIRE(in);
     REQUIRE(out);
     DupinCyclide D;
-    if (Outcome r = dupin_in(fn, in, D); r.status) return r;
-    if (!std::isfinite(d)) return fail(CYC_E_NOT_FINITE, "%s: d = %.17g is not finite", fn, d);
+    if (Outcome r = dupin_in(fn, "in.", in, D); r.status) return r;
+    TRY(check_double(fn, "d", d));
     return dupin_out(fn, dupin_offset(D, d), out);
   });
 }
@@ -667,7 +701,10 @@ int cyc_dupin_eval(cyc_context* ctx, const cyc_dupin* cyclide, double xi, double
     REQUIRE(cyclide);
     REQUIRE(out);
     DupinCyclide D;
-    if (Outcome r = dupin_in(fn, cyclide, D); r.status) return r;
+    if (Outcome r = dupin_in(fn, "cyclide.", cyclide, D); r.status) return r;
+    TRY(check_double(fn, "xi", xi));
+    TRY(check_double(fn, "zeta", zeta));
+    TRY(check_double(fn, "offset", offset));
     DupinPoint P;
     if (Status s = dupin_eval(D, xi, zeta, offset, P); s != Status::ok)
       return eval_failure(fn, s, xi, zeta);
@@ -685,7 +722,10 @@ int cyc_dupin_eval_homogeneous(cyc_context* ctx, const cyc_dupin* cyclide, const
     REQUIRE(zeta);
     REQUIRE(out);
     DupinCyclide D;
-    if (Outcome r = dupin_in(fn, cyclide, D); r.status) return r;
+    if (Outcome r = dupin_in(fn, "cyclide.", cyclide, D); r.status) return r;
+    TRY(check_doubles(fn, "xi", xi, 2));
+    TRY(check_doubles(fn, "zeta", zeta, 2));
+    TRY(check_double(fn, "offset", offset));
     DupinPoint P;
     const Status s = dupin_eval_homogeneous(D, {xi[0], xi[1]}, {zeta[0], zeta[1]}, offset, P);
     if (s == Status::invalid_argument)
@@ -707,10 +747,11 @@ int cyc_dupin_sphere(cyc_context* ctx, const cyc_dupin* cyclide, int family, con
     REQUIRE(t);
     REQUIRE(out);
     DupinCyclide D;
-    if (Outcome r = dupin_in(fn, cyclide, D); r.status) return r;
+    if (Outcome r = dupin_in(fn, "cyclide.", cyclide, D); r.status) return r;
     if (family != 0 && family != 1)
       return fail(CYC_E_INVALID_ARGUMENT, "%s: family = %d is not 0 (a(xi)) or 1 (a_perp(zeta))",
                   fn, family);
+    TRY(check_doubles(fn, "t", t, 2));
     LieSphere L;
     const HomogeneousParameter h{t[0], t[1]};
     const Status s = family == 0 ? dupin_sphere_xi(D, h, L) : dupin_sphere_zeta(D, h, L);
@@ -731,10 +772,14 @@ int cyc_dupin_eval_grid(cyc_context* ctx, const cyc_dupin* cyclide, const double
     if (nxi > 0) REQUIRE(xis);
     if (nzeta > 0) REQUIRE(zetas);
     DupinCyclide D;
-    if (Outcome r = dupin_in(fn, cyclide, D); r.status) return r;
-    if (nzeta > 0 && nxi > (SIZE_MAX / 3) / nzeta)
+    if (Outcome r = dupin_in(fn, "cyclide.", cyclide, D); r.status) return r;
+    size_t points_n = 0, doubles_n = 0;
+    if (!size_product(nxi, nzeta, points_n) || !size_product(points_n, 3, doubles_n))
       return fail(CYC_E_INVALID_ARGUMENT, "%s: nxi * nzeta * 3 = %zu * %zu * 3 overflows", fn,
                   nxi, nzeta);
+    TRY(check_doubles(fn, "xis", xis, nxi));
+    TRY(check_doubles(fn, "zetas", zetas, nzeta));
+    TRY(check_double(fn, "offset", offset));
     // Pass 1 validates every point, pass 2 (the same bits) writes them.
     DupinPoint P;
     for (size_t i = 0; i < nxi; ++i)
@@ -764,17 +809,20 @@ int cyc_dupin_surface_create(cyc_context* ctx, const cyc_dupin* cyclide, const d
     REQUIRE(cyclide);
     REQUIRE(out);
     DupinView V;
-    if (Outcome r = dupin_in(fn, cyclide, V.cyclide); r.status) return r;
+    if (Outcome r = dupin_in(fn, "cyclide.", cyclide, V.cyclide); r.status) return r;
+    if (xi_map) TRY(check_doubles(fn, "xi_map", xi_map, 4));
+    if (zeta_map) TRY(check_doubles(fn, "zeta_map", zeta_map, 4));
+    TRY(check_double(fn, "u0", u0));
+    TRY(check_double(fn, "u1", u1));
     if (xi_map) std::copy(xi_map, xi_map + 4, V.xi_map);
     if (zeta_map) std::copy(zeta_map, zeta_map + 4, V.zeta_map);
+    if (!(u0 < u1))
+      return fail(CYC_E_BAD_DOMAIN, "%s: [u0, u1] = [%.17g, %.17g] is empty or reversed", fn, u0,
+                  u1);
     Surface S;
     double bad_u = u0;
     const Status s = make_dupin_surface(V, u0, u1, S, &bad_u);
-    if (s == Status::invalid_argument)
-      return fail(int(s), "%s: xi_map or zeta_map is degenerate (a d - b c = 0 to 1e-12 relative)",
-                  fn);
-    if (s == Status::bad_domain || s == Status::not_finite) return from_core(fn, s);
-    if (s != Status::ok) return from_core_at(fn, s, bad_u);
+    if (s != Status::ok) return dupin_scan_failure(fn, s, bad_u);
     return emit(fn, ctx, out, S);
   });
 }
@@ -787,6 +835,42 @@ LieCone cyclide::capi::cone_in(const cyc_lie_cone* c) {
   return {lie6(c->r0), lie6(c->r_plus)};
 }
 
+Outcome cyclide::capi::cone_check(const char* fn, const char* name, const cyc_lie_cone* c,
+                                  LieCone& out) {
+  TRY(check_doubles(fn, FieldName(name, ".r0"), c->r0, 6));
+  TRY(check_doubles(fn, FieldName(name, ".r_plus"), c->r_plus, 6));
+  const LieCone K = cone_in(c);
+  // The core's normalization (cone_circle runs it) decides; the messages
+  // say which condition of a cone R = span(r0, r+) ~ R^{1,1,0} failed.
+  Vec3d centre, normal;
+  double radius = 0;
+  switch (cone_circle(K, centre, normal, radius)) {
+    case Status::ok: break;
+    case Status::not_on_lie_quadric:
+      return fail(CYC_E_NOT_ON_LIE_QUADRIC,
+                  "%s: %s.r0 is not neutral (r0 . r0 != 0 to 1e-9 |r0|^2): it is no Lie sphere, "
+                  "so it generates no cone",
+                  fn, name);
+    case Status::unsupported:
+      return fail(CYC_E_UNSUPPORTED,
+                  "%s: %s.r0 is a plane: a planar tangent cone (seed 003 Remark 4.2) is not "
+                  "supported",
+                  fn, name);
+    case Status::numerical_overflow:
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: %s's circle overflows", fn, name);
+    default:
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: %s is not a cone: r_plus must be nonzero, orthogonal to r0 "
+                  "(r_plus . r0 = 0) and positive (r_plus . r_plus > 0, a real cone), and r0 "
+                  "must be no point sphere",
+                  fn, name);
+  }
+  if (!centre.allFinite() || !normal.allFinite() || !std::isfinite(radius))
+    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: %s's circle overflows", fn, name);
+  out = K;
+  return ok();
+}
+
 namespace {
 
 void cone_out(const LieCone& K, cyc_lie_cone* out) {
@@ -796,18 +880,118 @@ void cone_out(const LieCone& K, cyc_lie_cone* out) {
   *out = c;
 }
 
+// The statuses of a cone constructor whose own arguments passed their
+// checks: what remains is the cone the arguments describe.
+Outcome cone_made(const char* fn, Status s, const LieCone& K, cyc_lie_cone* out) {
+  switch (s) {
+    case Status::ok: {
+      // Hand it out only if the cone it makes is one every consumer accepts.
+      Vec3d c, n;
+      double r = 0;
+      if (cone_circle(K, c, n, r) != Status::ok || !c.allFinite() || !n.allFinite() ||
+          !std::isfinite(r))
+        return fail(CYC_E_NUMERICAL_OVERFLOW,
+                    "%s: the cone's representatives are ill-conditioned (its circle cannot be "
+                    "read back)",
+                    fn);
+      cone_out(K, out);
+      return ok();
+    }
+    case Status::numerical_overflow:
+      return fail(int(s), "%s: the cone's Lie vectors overflow (|m|^2 or rho^2 beyond double)", fn);
+    case Status::unsupported:
+      return fail(int(s), "%s: the generating sphere is a plane (a planar tangent cone, seed 003 "
+                          "Remark 4.2): not supported", fn);
+    default:
+      return fail(int(s),
+                  "%s: the arguments describe no real cone (the sphere family's derivative "
+                  "r_plus is not positive, or its generating sphere is a point)",
+                  fn);
+  }
+}
+
+Outcome orientation_in(const char* fn, const char* name, int o, const char* meaning) {
+  if (o == 1 || o == -1) return ok();
+  return fail(CYC_E_INVALID_ARGUMENT, "%s: %s = %d is not +1 or -1 (%s)", fn, name, o, meaning);
+}
+
+// A circle's arguments (center, normal, radius) for the cone constructors.
+Outcome circle_in(const char* fn, const double* center, const double* normal, double radius) {
+  TRY(check_doubles(fn, "center", center, 3));
+  TRY(check_doubles(fn, "normal", normal, 3));
+  TRY(check_double(fn, "radius", radius));
+  if (!(radius > 0))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: radius = %.17g is not positive (the glued circle's "
+                                        "radius)", fn, radius);
+  if (normal[0] == 0 && normal[1] == 0 && normal[2] == 0)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: normal = (0, 0, 0) gives the circle's plane no "
+                                        "direction", fn);
+  return ok();
+}
+
+// Both cones of a blend call, validated and named r and s.
+Outcome cones_in(const char* fn, const cyc_lie_cone* r, const cyc_lie_cone* s, LieCone& R,
+                 LieCone& S) {
+  TRY(cone_check(fn, "r", r, R));
+  TRY(cone_check(fn, "s", s, S));
+  return ok();
+}
+
+// A blend construction's failure for valid cones, in Algorithm 2's words.
+Outcome blend_failure(const char* fn, Status st, const LieCone& R, const LieCone& S,
+                      double alpha) {
+  switch (st) {
+    case Status::invalid_argument: {
+      int dim = 0;
+      if (cyclide_blend_dimension(R, S, dim) != Status::ok)
+        return fail(int(st), "%s: r and s are one cone, or share their generating sphere (r0 = "
+                             "s0 up to scale): there is nothing to blend", fn);
+      return fail(int(st),
+                  "%s: alpha = %.17g is on an asymptote of (43): beta does not exist there (45), "
+                  "or the joint sphere t0 of (44) touches r0 or s0 ((34), (35))",
+                  fn, alpha);
+    }
+    case Status::tangent_generating_spheres:
+      return fail(int(st), "%s: the generating spheres r0 and s0 are in oriented contact (r0 . "
+                           "s0 = 0, seed 003 Lemma 4.6 (i)): no cyclide blend joins them", fn);
+    case Status::singular_point:
+      return fail(int(st),
+                  "%s: a piece of the blend contains a point sphere, so its circles shrink to "
+                  "a point on a glued circle or inside the patch (a spindle or horn cyclide); "
+                  "another alpha or branch may avoid it",
+                  fn);
+    case Status::not_isometric:
+    case Status::rank_deficient:
+    case Status::numerical_overflow:
+      return fail(int(st),
+                  "%s: a piece's cyclide could not be built from its glued spheres (the Witt "
+                  "extension of Algorithm 1 failed: the anchors are nearly dependent, next to "
+                  "an asymptote of (43))",
+                  fn);
+    case Status::degenerate_cyclide:
+      return fail(int(st), "%s: a piece of the blend degenerates to a curve (every sphere of one "
+                           "family is a point)", fn);
+    default: return cone_status(fn, st);
+  }
+}
+
 }  // namespace
 
 Outcome cyclide::capi::cone_status(const char* fn, Status s) {
   switch (s) {
     case Status::unsupported:
-      return fail(int(s), "%s: the generating sphere r0 is a plane (a planar tangent cone, "
-                          "Remark 4.2): not supported yet", fn);
+      return fail(int(s), "%s: a generating sphere r0 is a plane (a planar tangent cone, seed 003 "
+                          "Remark 4.2): not supported", fn);
     case Status::invalid_argument:
-      return fail(int(s), "%s: not a cone: r_plus must be positive and orthogonal to r0, r0 "
-                          "no point sphere, the two cones' generating spheres distinct (or an "
-                          "argument is out of range: orientation/direction/branch +-1, radius "
-                          "> 0, |dm| > |drho|, apex on the axis)", fn);
+      return fail(int(s), "%s: the cones admit no blend here: each must be a real cone (r_plus "
+                          "positive and orthogonal to r0, r0 no point sphere), the two must "
+                          "differ, and alpha must be off the asymptotes of (43)", fn);
+    case Status::tangent_generating_spheres:
+      return fail(int(s), "%s: the generating spheres r0 and s0 are in oriented contact (r0 . "
+                          "s0 = 0, seed 003 Lemma 4.6 (i)): no cyclide blend joins them", fn);
+    case Status::singular_point:
+      return fail(int(s), "%s: a piece of the blend contains a point sphere, so its circles "
+                          "shrink to a point (a spindle or horn cyclide)", fn);
     default: return from_core(fn, s);
   }
 }
@@ -817,7 +1001,16 @@ namespace {
 // A caller's blend: 1 or 2 pieces, each a valid cyc_dupin.
 Outcome blend_in(const char* fn, const cyc_cyclide_blend* b, CyclideBlend& B) {
   if (b->pieces != 1 && b->pieces != 2)
-    return fail(CYC_E_INVALID_ARGUMENT, "%s: blend->pieces = %d is not 1 or 2", fn, b->pieces);
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: blend.pieces = %d is not 1 or 2", fn, b->pieces);
+  // A double blend lies on one branch of (43); a single one has none (the
+  // field is not read).
+  if (b->pieces == 2 && b->branch != 1 && b->branch != -1)
+    return fail(CYC_E_INVALID_ARGUMENT,
+                "%s: blend.branch = %d is not +1 or -1 (the branch of (43) of a double blend)",
+                fn, b->branch);
+  TRY(check_double(fn, "blend.alpha", b->alpha));
+  TRY(check_double(fn, "blend.beta", b->beta));
+  TRY(check_doubles(fn, "blend.joint", b->joint, 6));
   CyclideBlend C;
   C.pieces = b->pieces;
   C.branch = b->branch;
@@ -825,9 +1018,26 @@ Outcome blend_in(const char* fn, const cyc_cyclide_blend* b, CyclideBlend& B) {
   C.beta = b->beta;
   C.joint = lie6(b->joint);
   for (int i = 0; i < C.pieces; ++i)
-    if (Outcome r = dupin_in(fn, &b->piece[i], C.piece[i].cyclide); r.status) return r;
+    if (Outcome r = dupin_in(fn, i == 0 ? "blend.piece[0]." : "blend.piece[1].", &b->piece[i],
+                             C.piece[i].cyclide);
+        r.status)
+      return r;
   B = C;
   return ok();
+}
+
+// The failure of a query on a caller's (validated) blend.
+Outcome blend_query_failure(const char* fn, Status st) {
+  switch (st) {
+    case Status::point_at_infinity:
+      return fail(int(st), "%s: the circle passes through infinity (it is a line of the patch)",
+                  fn);
+    case Status::singular_point:
+      return fail(int(st), "%s: a circle of the patch shrinks to a point", fn);
+    case Status::numerical_overflow:
+      return fail(int(st), "%s: the patch's circles overflow", fn);
+    default: return from_core(fn, st);
+  }
 }
 
 }  // namespace
@@ -840,6 +1050,8 @@ Outcome cyclide::capi::blend_out(const char* fn, const CyclideBlend& B, cyc_cycl
   c.alpha = B.alpha;
   c.beta = B.beta;
   put6(c.joint, B.joint);
+  if (!B.joint.allFinite() || !std::isfinite(B.alpha) || !std::isfinite(B.beta))
+    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the blend's joint or parameters overflow", fn);
   for (int i = 0; i < B.pieces; ++i)
     if (Outcome r = dupin_out(fn, B.piece[i].cyclide, &c.piece[i]); r.status) return r;
   *out = c;
@@ -855,12 +1067,24 @@ int cyc_cone_from_spheres(cyc_context* ctx, const double m[3], double rho, const
     REQUIRE(m);
     REQUIRE(dm);
     REQUIRE(out);
+    TRY(check_doubles(fn, "m", m, 3));
+    TRY(check_double(fn, "rho", rho));
+    TRY(check_doubles(fn, "dm", dm, 3));
+    TRY(check_double(fn, "drho", drho));
+    if (rho == 0)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: rho = 0: the generating sphere is a point, its circle a point", fn);
+    // |dm| > |drho|, (11) strict: the spheres m + h dm, rho + h drho
+    // envelop a real cone (|dm| = |drho| a plane pencil, less none).
+    const Vec3d d = vec(dm);
+    const double big = std::max(d.cwiseAbs().maxCoeff(), std::abs(drho));
+    if (!(big > 0) || !((d / big).norm() > std::abs(drho) / big))
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: |dm| = %.17g is not larger than |drho| = %.17g: the spheres (m + h dm, "
+                  "rho + h drho) envelop no real cone",
+                  fn, d.norm(), std::abs(drho));
     LieCone K;
-    const Status s = cone_from_spheres(Vec3d(m[0], m[1], m[2]), rho, Vec3d(dm[0], dm[1], dm[2]),
-                                       drho, K);
-    if (s != Status::ok) return cone_status(fn, s);
-    cone_out(K, out);
-    return ok();
+    return cone_made(fn, cone_from_spheres(vec(m), rho, d, drho, K), K, out);
   });
 }
 
@@ -871,13 +1095,13 @@ int cyc_cone_from_circle(cyc_context* ctx, const double center[3], const double 
     REQUIRE(center);
     REQUIRE(normal);
     REQUIRE(out);
+    TRY(circle_in(fn, center, normal, radius));
+    TRY(check_double(fn, "slope", slope));
+    TRY(orientation_in(fn, "orientation", orientation,
+                       "+1: the generating sphere's normals point away from the axis"));
     LieCone K;
-    const Status s = cone_from_circle(Vec3d(center[0], center[1], center[2]),
-                                      Vec3d(normal[0], normal[1], normal[2]), radius, slope,
-                                      orientation, K);
-    if (s != Status::ok) return cone_status(fn, s);
-    cone_out(K, out);
-    return ok();
+    return cone_made(
+        fn, cone_from_circle(vec(center), vec(normal), radius, slope, orientation, K), K, out);
   });
 }
 
@@ -890,13 +1114,19 @@ int cyc_cone_from_circle_apex(cyc_context* ctx, const double center[3], const do
     REQUIRE(normal);
     REQUIRE(apex);
     REQUIRE(out);
+    TRY(circle_in(fn, center, normal, radius));
+    TRY(check_doubles(fn, "apex", apex, 3));
+    TRY(orientation_in(fn, "orientation", orientation,
+                       "+1: the generating sphere's normals point away from the axis"));
     LieCone K;
-    const Status s = cone_from_circle_apex(Vec3d(center[0], center[1], center[2]),
-                                           Vec3d(normal[0], normal[1], normal[2]), radius,
-                                           Vec3d(apex[0], apex[1], apex[2]), orientation, K);
-    if (s != Status::ok) return cone_status(fn, s);
-    cone_out(K, out);
-    return ok();
+    const Status s = cone_from_circle_apex(vec(center), vec(normal), radius, vec(apex),
+                                           orientation, K);
+    if (s == Status::invalid_argument)
+      return fail(int(s),
+                  "%s: apex = (%.17g, %.17g, %.17g) is not on the circle's axis (center + h "
+                  "normal), or lies in the circle's plane (h = 0)",
+                  fn, apex[0], apex[1], apex[2]);
+    return cone_made(fn, s, K, out);
   });
 }
 
@@ -906,14 +1136,28 @@ int cyc_cone_from_surface(cyc_context* ctx, const cyc_surface* surface, double u
   return run(ctx, fn, [&] {
     REQUIRE(surface);
     REQUIRE(out);
+    TRY(check_double(fn, "u", u));
+    TRY(orientation_in(fn, "direction", direction, "+1: the blend leaves towards larger u"));
+    TRY(orientation_in(fn, "orientation", orientation,
+                       "+1: the sphere's radius as the surface gives it"));
     LieCone K;
     const Status s = cone_from_surface(surface->surface, u, direction, orientation, K);
-    if (s == Status::not_canal)
-      return fail(int(s), "%s: the surface is not canal by construction (kinds PRCS and "
-                          "DUPIN have tangent cones)", fn);
-    if (s != Status::ok) return cone_status(fn, s);
-    cone_out(K, out);
-    return ok();
+    switch (s) {
+      case Status::ok:
+      case Status::numerical_overflow: return cone_made(fn, s, K, out);
+      case Status::not_canal:
+        return fail(int(s), "%s: the surface is not canal by construction (kinds PRCS and "
+                            "DUPIN have tangent cones)", fn);
+      case Status::unsupported:
+        return fail(int(s), "%s: the surface's sphere at u = %.17g is a plane (a planar tangent "
+                            "cone, seed 003 Remark 4.2): not supported", fn, u);
+      case Status::invalid_argument:
+        return fail(int(s),
+                    "%s: the surface's spheres at u = %.17g envelop no real cone there (|dm| <= "
+                    "|drho|, or the sphere is a point)",
+                    fn, u);
+      default: return from_core_at(fn, s, u);
+    }
   });
 }
 
@@ -925,12 +1169,12 @@ int cyc_cone_circle(cyc_context* ctx, const cyc_lie_cone* cone, double center[3]
     REQUIRE(center);
     REQUIRE(normal);
     REQUIRE(radius);
+    LieCone K;
+    TRY(cone_check(fn, "cone", cone, K));
     Vec3d c, n;
     double r;
-    const Status s = cone_circle(cone_in(cone), c, n, r);
-    if (s != Status::ok) return cone_status(fn, s);
-    if (!c.allFinite() || !n.allFinite() || !std::isfinite(r))
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the circle overflows", fn);
+    if (cone_circle(K, c, n, r) != Status::ok)
+      return fail(CYC_E_INTERNAL, "%s: a validated cone has no circle", fn);
     put3(center, c);
     put3(normal, n);
     *radius = r;
@@ -944,9 +1188,18 @@ int cyc_cone_surface_create(cyc_context* ctx, const cyc_lie_cone* cone, double h
   return run(ctx, fn, [&] {
     REQUIRE(cone);
     REQUIRE(out);
+    LieCone K;
+    TRY(cone_check(fn, "cone", cone, K));
+    TRY(check_double(fn, "h0", h0));
+    TRY(check_double(fn, "h1", h1));
+    if (!(h0 < h1))
+      return fail(CYC_E_BAD_DOMAIN, "%s: [h0, h1] = [%.17g, %.17g] is empty or reversed", fn, h0,
+                  h1);
     Surface S;
-    const Status s = cone_surface(cone_in(cone), h0, h1, S);
-    if (s != Status::ok) return cone_status(fn, s);
+    const Status s = cone_surface(K, h0, h1, S);
+    if (s != Status::ok)
+      return fail(int(s), "%s: the cone as a ringed surface on [h0, h1] = [%.17g, %.17g] is "
+                          "degenerate (%s)", fn, h0, h1, explain(s));
     return emit(fn, ctx, out, S);
   });
 }
@@ -958,9 +1211,11 @@ int cyc_cyclide_blend_dimension(cyc_context* ctx, const cyc_lie_cone* r, const c
     REQUIRE(r);
     REQUIRE(s);
     REQUIRE(dim);
+    LieCone R, S;
+    TRY(cones_in(fn, r, s, R, S));
     int d = 0;
-    const Status st = cyclide_blend_dimension(cone_in(r), cone_in(s), d);
-    if (st != Status::ok) return cone_status(fn, st);
+    const Status st = cyclide_blend_dimension(R, S, d);
+    if (st != Status::ok) return blend_failure(fn, st, R, S, 0.0);
     *dim = d;
     return ok();
   });
@@ -973,14 +1228,16 @@ int cyc_cyclide_blend_beta(cyc_context* ctx, const cyc_lie_cone* r, const cyc_li
     REQUIRE(r);
     REQUIRE(s);
     REQUIRE(beta);
-    if (branch != 1 && branch != -1)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: branch = %d is not +1 or -1", fn, branch);
+    LieCone R, S;
+    TRY(cones_in(fn, r, s, R, S));
+    TRY(orientation_in(fn, "branch", branch, "the branch of (43)"));
+    TRY(check_double(fn, "alpha", alpha));
     double b = 0;
-    const Status st = cyclide_blend_beta(cone_in(r), cone_in(s), branch, alpha, b);
+    const Status st = cyclide_blend_beta(R, S, branch, alpha, b);
     if (st == Status::invalid_argument)
-      return fail(int(st), "%s: alpha = %.17g is the asymptote (45) of (43) (or a cone is "
-                           "invalid)", fn, alpha);
-    if (st != Status::ok) return cone_status(fn, st);
+      return fail(int(st), "%s: alpha = %.17g is the asymptote (45) of (43): beta does not exist "
+                           "there", fn, alpha);
+    if (st != Status::ok) return blend_failure(fn, st, R, S, alpha);
     *beta = b;
     return ok();
   });
@@ -993,9 +1250,17 @@ int cyc_cyclide_blend_build(cyc_context* ctx, const cyc_lie_cone* r, const cyc_l
     REQUIRE(r);
     REQUIRE(s);
     REQUIRE(out);
+    LieCone R, S;
+    TRY(cones_in(fn, r, s, R, S));
+    TRY(check_double(fn, "alpha", alpha));
     CyclideBlend B;
-    const Status st = cyclide_blend(cone_in(r), cone_in(s), branch, alpha, B);
-    if (st != Status::ok) return cone_status(fn, st);
+    const Status st = cyclide_blend(R, S, branch, alpha, B);
+    // The branch is read only in Case II (dim(R + S) = 4), so only there
+    // can it be wrong.
+    if (st == Status::invalid_argument && branch != 1 && branch != -1)
+      return fail(int(st), "%s: branch = %d is not +1 or -1 (the cones span dim(R + S) = 4: a "
+                           "double blend on a branch of (43))", fn, branch);
+    if (st != Status::ok) return blend_failure(fn, st, R, S, alpha);
     return blend_out(fn, B, out);
   });
 }
@@ -1007,12 +1272,18 @@ int cyc_cyclide_blend_auto(cyc_context* ctx, const cyc_lie_cone* r, const cyc_li
     REQUIRE(r);
     REQUIRE(s);
     REQUIRE(out);
-    if (samples < 8 || samples > 4096)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: samples = %d is not in 8..4096", fn, samples);
+    LieCone R, S;
+    TRY(cones_in(fn, r, s, R, S));
+    TRY(check_range(fn, "samples", samples, 8, 4096));
     CyclideBlend B;
     double q = 0;
-    const Status st = cyclide_blend_auto(cone_in(r), cone_in(s), B, samples, &q);
-    if (st != Status::ok) return cone_status(fn, st);
+    const Status st = cyclide_blend_auto(R, S, B, samples, &q);
+    if (st == Status::singular_point || st == Status::blend_folds)
+      return fail(int(st),
+                  "%s: no sample of alpha on either branch of (43) gives a valid blend (%s)", fn,
+                  st == Status::blend_folds ? "some fold back over a cone or at the joint"
+                                            : "every piece pinches to a point sphere");
+    if (st != Status::ok) return blend_failure(fn, st, R, S, 0.0);
     cyc_cyclide_blend c;
     if (Outcome o = blend_out(fn, B, &c); o.status) return o;
     *out = c;
@@ -1032,12 +1303,19 @@ int cyc_cyclide_blend_circle(cyc_context* ctx, const cyc_cyclide_blend* blend, i
     REQUIRE(radius);
     CyclideBlend B;
     if (Outcome o = blend_in(fn, blend, B); o.status) return o;
-    if (piece < 0 || piece >= B.pieces || (family != 0 && family != 1))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: piece %d of %d, family %d (0 or 1)", fn, piece,
-                  B.pieces, family);
+    TRY(check_range(fn, "piece", piece, 0, B.pieces - 1));
+    if (family != 0 && family != 1)
+      return fail(CYC_E_INVALID_ARGUMENT,
+                  "%s: family = %d is not 0 (the circles u = s) or 1 (the circles through the "
+                  "first glued circle's point at angle s)",
+                  fn, family);
+    TRY(check_double(fn, "s", s));
+    if (family == 0 && !(s >= 0 && s <= 1))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: s = %.17g is outside [0, 1] (family 0: the "
+                                          "circle at u = s of the patch)", fn, s);
     BlendCircle C;
     if (Status st = cyclide_blend_circle(B, piece, family, s, C); st != Status::ok)
-      return from_core(fn, st);
+      return blend_query_failure(fn, st);
     put3(center, C.center);
     put3(normal, C.normal);
     *radius = C.radius;
@@ -1053,7 +1331,8 @@ int cyc_cyclide_blend_quality(cyc_context* ctx, const cyc_cyclide_blend* blend, 
     CyclideBlend B;
     if (Outcome o = blend_in(fn, blend, B); o.status) return o;
     double q = 0;
-    if (Status st = cyclide_blend_quality(B, q); st != Status::ok) return from_core(fn, st);
+    if (Status st = cyclide_blend_quality(B, q); st != Status::ok)
+      return blend_query_failure(fn, st);
     *quality = q;
     return ok();
   });
@@ -1067,12 +1346,10 @@ int cyc_cyclide_blend_surface_create(cyc_context* ctx, const cyc_cyclide_blend* 
     REQUIRE(out);
     CyclideBlend B;
     if (Outcome o = blend_in(fn, blend, B); o.status) return o;
-    if (piece < 0 || piece >= B.pieces)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: piece = %d, the blend has %d", fn, piece,
-                  B.pieces);
+    TRY(check_range(fn, "piece", piece, 0, B.pieces - 1));
     Surface S;
     if (Status st = cyclide_blend_surface(B, piece, S); st != Status::ok)
-      return from_core(fn, st);
+      return dupin_scan_failure(fn, st, 0.0);
     return emit(fn, ctx, out, S);
   });
 }
@@ -1086,19 +1363,27 @@ int cyc_cyclide_blend_continuity(cyc_context* ctx, const cyc_lie_cone* r, const 
     REQUIRE(s);
     REQUIRE(blend);
     REQUIRE(out);
-    if (n < 1 || n > 4096)
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d is not in 1..4096", fn, n);
+    LieCone R, S;
+    TRY(cones_in(fn, r, s, R, S));
+    TRY(check_range(fn, "n", n, 1, 4096));
     CyclideBlend B;
     if (Outcome o = blend_in(fn, blend, B); o.status) return o;
     CyclideBlendContinuity C;
-    const Status st = cyclide_blend_continuity(cone_in(r), cone_in(s), B, n, C);
-    if (st != Status::ok) return cone_status(fn, st);
+    const Status st = cyclide_blend_continuity(R, S, B, n, C);
+    if (st != Status::ok)
+      return fail(int(st),
+                  "%s: the cones' or the blend's surfaces could not be evaluated at the glued "
+                  "circles (%s)",
+                  fn, explain(st));
     cyc_cyclide_blend_report c;
     for (int j = 0; j < 3; ++j) {
       c.gap[j] = C.gap[j];
       c.angle[j] = C.angle[j];
     }
     c.scale = C.scale;
+    if (!std::isfinite(c.scale) || !std::isfinite(c.gap[0]) || !std::isfinite(c.gap[1]) ||
+        !std::isfinite(c.gap[2]))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the report overflows", fn);
     *out = c;
     return ok();
   });

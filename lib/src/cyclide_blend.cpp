@@ -431,7 +431,9 @@ Status blend_in_frame(const LieCone& R, const LieCone& S, int branch, double alp
     out = B;
     return Status::ok;
   }
-  // Case II: T = span(r, s) on the hyperbola (43), t0 by (44).
+  // Case II: T = span(r, s) on the hyperbola (43), t0 by (44), on one of
+  // its two branches.
+  if (!valid_orientation(branch)) return Status::invalid_argument;
   double beta = 0;
   if (Status st = beta_in_frame(R, S, branch, alpha, beta); st != Status::ok) return st;
   const Lie6d r = alpha * R.r0 + R.r_plus, s = beta * S.r0 + S.r_plus;

@@ -187,7 +187,10 @@ Signature complement_signature(const Signature& s) {
 }
 
 bool signature_exists(const Signature& s) {
-  return s.p >= 0 && s.r >= 0 && s.q >= 0 && s.p + s.r <= 4 && s.q + s.r <= 2;
+  // Each count against its bound before the sums, so that no count near
+  // INT_MAX can wrap them (p, r <= 4 and q, r <= 2 follow from the sums).
+  if (s.p < 0 || s.r < 0 || s.q < 0 || s.p > 4 || s.r > 2 || s.q > 2) return false;
+  return s.p + s.r <= 4 && s.q + s.r <= 2;
 }
 
 Status lie_orthonormal_basis(const LieSubspace& A, Matrix6d& B, Signature& s) {
