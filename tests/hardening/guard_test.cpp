@@ -20,7 +20,11 @@
 
 #include <cyclide/cyclide.h>
 
+#include <climits>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -217,6 +221,124 @@ TEST(Guard, FailingCallReturnsItsOwnStatusWhenTheHandlerSucceeds) {
   EXPECT_NE(std::string(cyc_context_last_error(ctx)).find("cyc_curve_create_polynomial"),
             std::string::npos);
   cyc_context_destroy(ctx);
+}
+
+}  // namespace
+
+namespace {
+
+// ------------------------------------------------------------ the rest of the ABI
+// The entry points without a context first: what a hostile host passes.
+
+TEST(Guard, ContextCreationRefusesBadArguments) {
+  EXPECT_EQ(cyc_context_create(nullptr, nullptr), CYC_E_NULL_ARGUMENT);
+  cyc_context* ctx = reinterpret_cast<cyc_context*>(uintptr_t(0x1234));
+  const cyc_allocator no_functions = {nullptr, nullptr, nullptr};
+  EXPECT_NE(cyc_context_create(&no_functions, &ctx), CYC_OK);
+  EXPECT_EQ(ctx, reinterpret_cast<cyc_context*>(uintptr_t(0x1234)));  // untouched on error
+  alignas(64) static unsigned char block[1 << 16];
+  EXPECT_EQ(cyc_context_init_static(nullptr, sizeof block, nullptr, &ctx), CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_context_init_static(block, sizeof block, nullptr, nullptr), CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_context_init_static(block, 0, nullptr, &ctx), CYC_E_BUFFER_TOO_SMALL);
+  EXPECT_EQ(cyc_context_init_static(block, sizeof block, &no_functions, &ctx),
+            CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(ctx, reinterpret_cast<cyc_context*>(uintptr_t(0x1234)));
+}
+
+TEST(Guard, NullHandlesAndNullContextsAreHarmless) {
+  cyc_context_destroy(nullptr);
+  cyc_curve_destroy(nullptr, nullptr);
+  cyc_surface_destroy(nullptr, nullptr);
+  cyc_sphere_skin_destroy(nullptr, nullptr);
+  cyc_bezier_export_destroy(nullptr);
+  cyc_pn_surface_destroy(nullptr);
+  EXPECT_EQ(cyc_bezier_export_count(nullptr), 0);
+  EXPECT_NE(cyc_context_last_error(nullptr), nullptr);
+  EXPECT_EQ(cyc_context_last_status(nullptr), CYC_E_NULL_ARGUMENT);
+  EXPECT_EQ(cyc_context_static_remaining(nullptr), 0u);
+  cyc_skin_end_sphere(nullptr, nullptr, nullptr);
+  cyc_pcurve_blend_options_init(nullptr);
+  cyc_ringed_field_options_init(nullptr);
+  cyc_nway_options_init(nullptr);
+  cyc_blend_objective_init(nullptr);
+  cyc_optimize_options_init(nullptr);
+  cyc_bump_objective_init(nullptr);
+  cyc_bump_options_init(nullptr);
+  cyc_implicit_approx_options_init(nullptr);
+  cyc_skin_options_init(nullptr);
+  cyc_skin_tangent_options_init(nullptr);
+  cyc_cyclide_blend_objective_init(nullptr);
+  cyc_cyclide_blend_options_init(nullptr);
+  cyc_tessellation_options_default(nullptr);
+  cyc_skin_export_options_default(nullptr);
+}
+
+TEST(Guard, StatusNamesAreNeverNull) {
+  for (int s : {INT_MIN, -1, 0, 1, 100, 199, 300, 302, 999, 100000, INT_MAX}) {
+    const char* name = cyc_status_name(s);
+    ASSERT_NE(name, nullptr) << s;
+    EXPECT_GT(std::strlen(name), 0u) << s;
+  }
+}
+
+TEST(Guard, TauOfVKeepsItsRange) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double v : {0.0, -0.0, 1.0, -1.0, 1e300, -1e300, inf, -inf, 4.9e-324}) {
+    const double tau = cyc_export_tau_of_v(v);
+    EXPECT_TRUE(tau >= -2 && tau <= 2) << v << " -> " << tau;
+  }
+  for (double tau : {-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0, 1e300, -inf, inf}) {
+    const double v = cyc_export_v_of_tau(tau);
+    EXPECT_FALSE(std::isnan(v)) << tau;
+  }
+}
+
+// The arguments a host may pass to a size query: everything an int holds.
+const int kCounts[] = {INT_MIN, INT_MIN + 1, -1000000, -2, -1, 0,  1,  2,  3,  4,  5,
+                       16,      1000,        65536,    1 << 20,        50000000,
+                       50000001, 100000000,  100000001, 1 << 30,       INT_MAX / 2 + 1,
+                       INT_MAX - 1, INT_MAX};
+
+// A size query never returns a negative or wrapped value: over increasing
+// arguments its results are 0 (not supported) or non-decreasing.
+template <class F>
+void check_monotone(const char* name, F&& f) {
+  long double last = 0;
+  for (int n : kCounts) {
+    const long double r = static_cast<long double>(f(n));
+    EXPECT_GE(r, 0.0L) << name << "(" << n << ")";
+    if (r == 0) continue;
+    EXPECT_GE(r, last) << name << "(" << n << ") wrapped: " << double(r) << " < " << double(last);
+    last = r;
+  }
+}
+
+TEST(Guard, SizeQueriesNeverNegativeNorWrapped) {
+  check_monotone("cyc_tessellation_workspace_size", cyc_tessellation_workspace_size);
+  check_monotone("cyc_sphere_skin_tessellation_workspace_size",
+                 cyc_sphere_skin_tessellation_workspace_size);
+  check_monotone("cyc_delaunay_workspace_size", cyc_delaunay_workspace_size);
+  check_monotone("cyc_delaunay_max_triangles", cyc_delaunay_max_triangles);
+  for (int ntri : kCounts) {
+    check_monotone("cyc_powell_sabin_workspace_size",
+                   [ntri](int n) { return cyc_powell_sabin_workspace_size(n, ntri); });
+    check_monotone("cyc_design_workspace_size",
+                   [ntri](int n) { return cyc_design_workspace_size(n, ntri); });
+    check_monotone("cyc_design_max_patches",
+                   [ntri](int n) { return cyc_design_max_patches(n, ntri); });
+  }
+  // In ntri (ntri = 0 asks the design to triangulate: not a smaller case).
+  for (int n : kCounts) {
+    check_monotone("cyc_powell_sabin_workspace_size",
+                   [n](int ntri) { return cyc_powell_sabin_workspace_size(n, ntri); });
+    check_monotone("cyc_design_workspace_size", [n](int ntri) {
+      return ntri == 0 ? size_t(0) : cyc_design_workspace_size(n, ntri);
+    });
+  }
+  // The reported cases.
+  EXPECT_GE(cyc_delaunay_max_triangles(INT_MAX), 0);
+  EXPECT_GE(cyc_design_max_patches(INT_MAX, 0), 0);
+  EXPECT_GE(cyc_design_max_patches(200000000, 0), 0);
 }
 
 }  // namespace
