@@ -1571,8 +1571,11 @@ static void test_example3(cyc_context* ctx) {
     /* ERRATA (SPEC.md section 7): PRRS(line, point, point) is canal. */
     CHECK(is_canal == 1);
     is_canal = -7;
-    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 1e300, NULL, &is_canal), CYC_OK);
+    /* The largest tolerance in the input range accepts; beyond it the
+     * tolerance is refused like any other double input. */
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 1e100, NULL, &is_canal), CYC_OK);
     CHECK(is_canal == 1);
+    CHECK_STATUS(ctx, cyc_surface_canal_test(ctx, e.S, 1e300, NULL, &is_canal), CYC_E_NOT_FINITE);
   }
 
   /* The singular points P2 (v = 5 - u) and P3 on every circle. */

@@ -690,12 +690,17 @@ int cyc_surface_sphere(cyc_context* ctx, const cyc_surface* surface, double u,
   const char* fn = "cyc_surface_sphere";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
-    TRY(check_double(fn, "u", u));
     REQUIRE(out);
     Vec3d c;
     double r2;
-    if (Status s = surface->surface.sphere(u, c, r2); s != Status::ok)
+    // The kind is checked before u: a PRRS surface has no spheres at any u.
+    if (Status s = surface->surface.sphere(u, c, r2); s != Status::ok) {
+      if (s == Status::not_finite) TRY(check_double(fn, "u", u));
+      if (s == Status::not_canal)
+        return fail(int(s), "%s: the surface is not a canal surface by construction (PRRS, "
+                    "ringed): it has no touching spheres", fn);
       return from_core_at(fn, s, u);
+    }
     put3(out->center, c);
     out->radius2 = r2;
     return ok();
@@ -832,6 +837,23 @@ Outcome read_lines(const char* fn, const cyc_line lines[3], Line (&out)[3]) {
     TRY(read_line(fn, name, lines[i], out[i]));
   }
   return ok();
+}
+
+// The failures of constructions on three lines l1, l2, l3 (DCMC of §6,
+// PRRS of lines of §8): parallel lines, no common normal, a zero direction.
+Outcome three_lines_failure(const char* fn, Status s, const Line (&L)[3],
+                            const char* construction) {
+  if (s == Status::invalid_argument)
+    for (int i = 0; i < 3; ++i)
+      if (!(L[i].d.squaredNorm() > 0))
+        return fail(int(s), "%s: lines[%d].direction is zero", fn, i);
+  if (s == Status::parallel_lines)
+    return fail(int(s), "%s: two of the three lines are parallel (%s needs mutually "
+                "non-parallel lines)", fn, construction);
+  if (s == Status::no_common_normal)
+    return fail(int(s), "%s: the three directions have no common normal: the lines do not "
+                "lie in parallel planes (%s needs them to)", fn, construction);
+  return from_core(fn, s);
 }
 void put_line(cyc_line& out, const Line& L) {
   put3(out.point, L.P);
@@ -1067,7 +1089,13 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
     Line L[3];
     TRY(read_lines(fn, lines, L));
     DcmcFamily F;
-    if (Status s = dcmc(L, F); s != Status::ok) return from_core(fn, s);
+    if (Status s = dcmc(L, F); s != Status::ok) {
+      if (s == Status::rank_deficient)
+        return fail(int(s), "%s: the cyclides through the three lines form more than the "
+                    "one-parameter family of §6 (the linear system of steps 3-4 is rank "
+                    "deficient)", fn);
+      return three_lines_failure(fn, s, L, "DCMC");
+    }
     if (normal) put3(normal, F.n);
     put_darboux(base, F.base);
     put_darboux(quadric, F.quadric);
@@ -1321,7 +1349,12 @@ int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
     Line L[3];
     TRY(read_lines(fn, lines, L));
     PrrsLinesAnalysis A;
-    if (Status s = prrs_lines_analysis(L, A); s != Status::ok) return from_core(fn, s);
+    if (Status s = prrs_lines_analysis(L, A); s != Status::ok) {
+      if (s == Status::invalid_argument && L[0].d.squaredNorm() > 0 &&
+          L[1].d.squaredNorm() > 0 && L[2].d.squaredNorm() > 0)
+        return fail(int(s), "%s: the three lines lie in one plane: no normal form (52)", fn);
+      return three_lines_failure(fn, s, L, "the PRRS of three lines (§8)");
+    }
     cyc_prrs_lines_analysis R;
     std::memset(&R, 0, sizeof R);
     R.coplanar_pair = A.coplanar_pair;
@@ -1354,9 +1387,11 @@ int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darbou
     Darboux D;
     double r = 0;
     const Status s = prrs_lines_cyclide(L, D, &r);
-    if (s == Status::invalid_argument)
+    const bool directions = L[0].d.squaredNorm() > 0 && L[1].d.squaredNorm() > 0 &&
+                            L[2].d.squaredNorm() > 0;
+    if (s == Status::invalid_argument && directions)
       return fail(int(s), "%s: l1, l2 must meet in one plane at one parameter and (55) hold", fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s != Status::ok) return three_lines_failure(fn, s, L, "the PRRS of three lines (§8)");
     put_darboux(out, D);
     if (residual) *residual = r;
     return ok();

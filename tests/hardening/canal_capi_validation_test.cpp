@@ -974,6 +974,18 @@ TEST(CanalCapiMessages, FailuresInTheirOwnWords) {
   EXPECT_EQ(msg.find("DCMC"), std::string::npos) << msg;
   EXPECT_NE(msg.find("l1 and l2 are parallel"), std::string::npos) << msg;
 
+  // §8's PRRS of three lines is not DCMC either.
+  cyc_line L[3] = {l1, l2, {{0, 0, 3}, {0, 1, 0}}};
+  cyc_prrs_lines_analysis A;
+  EXPECT_EQ(cyc_prrs_lines_analyze(e.ctx, L, &A), CYC_E_PARALLEL_LINES);
+  msg = last_error(e);
+  EXPECT_EQ(msg.find("DCMC"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("§8"), std::string::npos) << msg;
+  L[1].direction[0] = 0;
+  EXPECT_EQ(cyc_prrs_lines_analyze(e.ctx, L, &A), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(last_error(e).rfind("cyc_prrs_lines_analyze: lines[1].direction is zero", 0), 0u)
+      << last_error(e);
+
   // A zero polynomial denominator of rho names rho_den.
   const double zero[1] = {0};
   cyc_surface* S = nullptr;

@@ -277,7 +277,8 @@ CYC_API int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surfa
                                       double u, cyc_sphere* out);
 /** Canal test (2) over the domain: the largest relative residual
  *  |[(n.c')c' + rho rho' n'] x n| / scale at the domain samples, and
- *  *is_canal = (residual <= tolerance); tolerance <= 0 uses 1e-9. */
+ *  *is_canal = (residual <= tolerance); tolerance <= 0 uses 1e-9; a
+ *  tolerance that is NaN, infinite or beyond 1e100 is CYC_E_NOT_FINITE. */
 CYC_API int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface,
                                    double tolerance, double* max_residual, int* is_canal);
 /** The v whose point x(u, v) is the point of the circle at u closest to
@@ -578,7 +579,10 @@ CYC_API int cyc_surface_derivatives_u(cyc_context* ctx, const cyc_surface* surfa
  *  phi^(m) for m = 2..K (0: none). The blend's curves take the derivatives
  *  d^l/dt^l x(phi(t), v[j]) (Faa di Bruno; with phi = 0 simply lambda^l
  *  d^l x/du^l), so every choice keeps the join geometrically C^K.
- *  Zero-initialize the struct ({0}) so that unused phi are 0. */
+ *  A blend of order K reads phi[0..K-2] only (the others are ignored);
+ *  zero-initialize the struct ({0}) all the same. u, lambda and the phi
+ *  read must lie in |x| <= 1e100; v[j] may be any number but NaN (+-inf is
+ *  the circle's point f = infinity). */
 typedef struct cyc_blend_end {
   const cyc_surface* surface;
   double u;
@@ -773,9 +777,10 @@ CYC_API int cyc_ringed_sqrt_create(cyc_context* ctx, const cyc_curve* d, const c
  *  the spatial P-curve (8) of the quaternion polynomial x0 + x1 i + x2 j +
  *  x3 k, given as x_degree + 1 rows (x0, x1, x2, x3), row k the coefficients
  *  of u^k; f = (cos phi n1 + sin phi n2) / sigma (10)-(12); rho as in
- *  cyc_ringed_dnr_create. Exact rational. CYC_E_INVALID_ARGUMENT for x = 0,
- *  CYC_E_DEGREE_TOO_HIGH for 2 x_degree > CYC_MAX_CURVE_DEGREE, then the
- *  statuses of cyc_ringed_create. */
+ *  cyc_ringed_dnr_create. Exact rational. CYC_E_INVALID_ARGUMENT for x = 0
+ *  or x_degree < 0, CYC_E_DEGREE_TOO_HIGH for 2 x_degree >
+ *  CYC_MAX_CURVE_DEGREE (x_degree is compared with its bound before x is
+ *  read), then the statuses of cyc_ringed_create. */
 CYC_API int cyc_ringed_pcurve_create(cyc_context* ctx, const cyc_curve* d, int x_degree,
                                      const double* x, double phi, int rho_num_degree,
                                      const double* rho_num, int rho_den_degree,
@@ -1227,7 +1232,8 @@ CYC_API int cyc_implicit_cone(cyc_context* ctx, const double apex[3], const doub
  *  NULL), the contour function f_v = grad f . v (76) and its gradient
  *  H v (may be NULL). Statuses: CYC_E_INVALID_ARGUMENT (lambda outside
  *  (0, 1), n outside 1..16, a zero plane normal or quadratic part),
- *  CYC_E_NOT_FINITE (input, or a non-finite result),
+ *  CYC_E_NOT_FINITE (an input field, named in the message),
+ *  CYC_E_NUMERICAL_OVERFLOW (f or a derivative overflows at x),
  *  CYC_E_DEPENDENT_PLANES (coincident bounding planes). Allocation-free;
  *  outputs written only on success. */
 CYC_API int cyc_implicit_blend_eval(cyc_context* ctx, const cyc_implicit_blend* blend,
