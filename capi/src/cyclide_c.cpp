@@ -797,6 +797,20 @@ static_assert(CYC_DARBOUX_QUARTIC == int(DarbouxType::quartic), "type numbers");
 
 namespace {
 
+// Outputs: every double of a result finite, or the call is
+// CYC_E_NUMERICAL_OVERFLOW (valid inputs near the range's end can overflow
+// a product: never a non-finite output with CYC_OK).
+bool finite_all(const double* x, size_t n) {
+  for (size_t i = 0; i < n; ++i)
+    if (!std::isfinite(x[i])) return false;
+  return true;
+}
+bool finite_line(const cyc_line& l) { return finite_all(l.point, 3) && finite_all(l.direction, 3); }
+Outcome overflow(const char* fn, const char* what) {
+  return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: %s overflows (not finite in double precision)", fn,
+              what);
+}
+
 // The coefficients of a Darboux equation (31), named name.k[i].
 Outcome read_darboux(const char* fn, const char* name, const cyc_darboux& in, Darboux& out) {
   char field[48];
@@ -1096,6 +1110,9 @@ int cyc_dcmc(cyc_context* ctx, const cyc_line lines[3], double normal[3], cyc_da
                     "deficient)", fn);
       return three_lines_failure(fn, s, L, "DCMC");
     }
+    if (!F.n.allFinite() || !finite_all(F.base.k, CYC_DARBOUX_COEFFS) ||
+        !finite_all(F.quadric.k, CYC_DARBOUX_COEFFS))
+      return overflow(fn, "the family base + alpha quadric");
     if (normal) put3(normal, F.n);
     put_darboux(base, F.base);
     put_darboux(quadric, F.quadric);
@@ -1109,6 +1126,10 @@ static_assert(CYC_MIN_FIT_POINTS == kMinFitPoints && CYC_MAX_FIT_POINTS == kMaxF
               "fit bounds");
 
 namespace {
+bool finite_fit(const DarbouxFit& F) {
+  return finite_all(F.D.k, CYC_DARBOUX_COEFFS) && std::isfinite(F.residual) &&
+         std::isfinite(F.sigma_ratio);
+}
 void put_fit(cyc_darboux_fit& out, const DarbouxFit& F) {
   put_darboux(&out.d, F.D);
   out.residual = F.residual;
@@ -1136,6 +1157,13 @@ void put_classification(cyc_lines_classification& out, const LinesClassification
   R.alpha = C.nf.alpha;
   R.beta = C.nf.beta;
   out = R;
+}
+bool finite_classification(const LinesClassification& C) {
+  cyc_lines_classification R;
+  put_classification(R, C);
+  return std::isfinite(R.a) && std::isfinite(R.b) && std::isfinite(R.c) &&
+         finite_all(R.rotation, 9) && std::isfinite(R.scale) && finite_all(R.origin, 3) &&
+         std::isfinite(R.alpha) && std::isfinite(R.beta);
 }
 // The classifications' failures in their own words (seed 000 Props. 2, 8,
 // 9 and their normal forms (45), (68), (77)).
@@ -1170,6 +1198,7 @@ int cyc_darboux_fit_points(cyc_context* ctx, const double* points, int count,
     const Status s = fit_darboux(X, count, F);
     if (s == Status::invalid_argument) return fail(int(s), "%s: all points are equal", fn);
     if (s != Status::ok) return from_core(fn, s);
+    if (!finite_fit(F)) return overflow(fn, "the fitted equation");
     put_fit(*out, F);
     return ok();
   });
@@ -1185,6 +1214,7 @@ int cyc_darboux_fit_surface(cyc_context* ctx, const cyc_surface* surface, cyc_da
     if (s == Status::invalid_argument)
       return fail(int(s), "%s: too few samples of the surface could be evaluated", fn);
     if (s != Status::ok) return from_core(fn, s);
+    if (!finite_fit(F)) return overflow(fn, "the fitted equation");
     put_fit(*out, F);
     return ok();
   });
@@ -1203,6 +1233,7 @@ int cyc_classify_two_lines(cyc_context* ctx, const cyc_line* l1, const cyc_line*
     LinesClassification C;
     if (Status s = classify_two_lines(A.P, A.d, B.P, B.d, C); s != Status::ok)
       return classify_failure(fn, s, "l1 and l2 intersect: b = 0 in the normal form (45)");
+    if (!finite_classification(C)) return overflow(fn, "the normal form");
     put_classification(*out, C);
     return ok();
   });
@@ -1230,7 +1261,10 @@ int cyc_classify_line_element(cyc_context* ctx, const cyc_line* l1, const double
       if (Status s = line_element_cyclide(C.nf, N, D); s != Status::ok)
         return fail(int(s), "%s: the implicit equation (70) in the input coordinates "
                     "overflows", fn);
+    if (!finite_classification(C)) return overflow(fn, "the normal form");
     put_classification(*out, C);
+    if (implicit && !finite_all(D.k, CYC_DARBOUX_COEFFS))
+      return overflow(fn, "the implicit equation (70)");
     if (implicit) put_darboux(implicit, D);
     return ok();
   });
@@ -1252,6 +1286,7 @@ int cyc_classify_line_two_points(cyc_context* ctx, const cyc_line* l1, const dou
     if (Status s = classify_line_two_points(A.P, A.d, vec(p2), vec(p3), C); s != Status::ok)
       return classify_failure(fn, s, "l1, p2 and p3 lie in one plane (or p2 on l1): no "
                               "normal form (77) of Prop. 9");
+    if (!finite_classification(C)) return overflow(fn, "the normal form");
     put_classification(*out, C);
     return ok();
   });
@@ -1286,6 +1321,11 @@ int cyc_parabolic_lines(cyc_context* ctx, const cyc_darboux* d, cyc_cyclide_line
     R.l0_circles = A.l0_circles ? 1 : 0;
     R.circle_families = A.circle_families();
     R.double_families = A.double_families();
+    bool finite = finite_all(R.normal, 3) && finite_all(R.plane_t, CYC_MAX_SECTION_PLANES);
+    for (const cyc_cyclide_line& l : R.lines)
+      finite = finite && finite_all(l.point, 3) && finite_all(l.direction, 3) &&
+               std::isfinite(l.t);
+    if (!finite) return overflow(fn, "a line or section plane");
     *out = R;
     return ok();
   });
@@ -1309,6 +1349,8 @@ int cyc_pencil_circle(cyc_context* ctx, const cyc_darboux* d, const cyc_line* li
     if (s == Status::invalid_argument)
       return fail(int(s), "%s: the line must lie on the cyclide and in the plane", fn);
     if (s != Status::ok) return from_core(fn, s);
+    if (!C.point.allFinite() || !C.axis.allFinite() || !std::isfinite(C.radius))
+      return overflow(fn, "the circle");
     put_circle_or_line(*out, C);
     return ok();
   });
@@ -1334,6 +1376,8 @@ int cyc_parabolic_parameterize(cyc_context* ctx, const cyc_darboux* d, int kind,
     cyc_line L[3];
     std::memset(L, 0, sizeof L);
     for (int j = 0; j < I.count; ++j) put_line(L[j], I.curves[j]);
+    for (const cyc_line& l : L)
+      if (!finite_line(l)) return overflow(fn, "an input line");
     if (Outcome o = emit(fn, ctx, out, S); o.status) return o;
     if (inputs) std::memcpy(inputs, L, sizeof L);
     return ok();
@@ -1371,6 +1415,9 @@ int cyc_prrs_lines_analyze(cyc_context* ctx, const cyc_line lines[3],
     R.cyclide = A.cyclide;
     R.mu = A.mu;
     if (A.pencil) put_line(R.l4, A.l4);
+    const double values[] = {R.a2, R.b2, R.a3, R.b3, R.x3, R.y3, R.cond55, R.cond56, R.mu};
+    if (!finite_all(values, sizeof values / sizeof *values) || !finite_line(R.l4))
+      return overflow(fn, "the normal form (52)");
     *out = R;
     return ok();
   });
@@ -1392,6 +1439,7 @@ int cyc_prrs_lines_cyclide(cyc_context* ctx, const cyc_line lines[3], cyc_darbou
     if (s == Status::invalid_argument && directions)
       return fail(int(s), "%s: l1, l2 must meet in one plane at one parameter and (55) hold", fn);
     if (s != Status::ok) return three_lines_failure(fn, s, L, "the PRRS of three lines (§8)");
+    if (!finite_all(D.k, CYC_DARBOUX_COEFFS) || std::isnan(r)) return overflow(fn, "the cyclide");
     put_darboux(out, D);
     if (residual) *residual = r;
     return ok();

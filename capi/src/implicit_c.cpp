@@ -116,7 +116,12 @@ int cyc_implicit_cylinder(cyc_context* ctx, const double point[3], const double 
         return fail(int(st), "%s: direction is zero: the cylinder has no axis", fn);
       return from_core(fn, st);
     }
-    quadric_coefficients(Q, coeffs);
+    double q[10];
+    quadric_coefficients(Q, q);
+    for (double c : q)
+      if (!std::isfinite(c))
+        return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: a coefficient of the quadric overflows", fn);
+    std::memcpy(coeffs, q, sizeof q);
     return ok();
   });
 }
@@ -140,7 +145,12 @@ int cyc_implicit_cone(cyc_context* ctx, const double apex[3], const double axis[
         return fail(int(st), "%s: axis is zero: the cone has no axis", fn);
       return from_core(fn, st);
     }
-    quadric_coefficients(Q, coeffs);
+    double q[10];
+    quadric_coefficients(Q, q);
+    for (double c : q)
+      if (!std::isfinite(c))
+        return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: a coefficient of the quadric overflows", fn);
+    std::memcpy(coeffs, q, sizeof q);
     return ok();
   });
 }

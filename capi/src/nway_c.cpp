@@ -64,6 +64,13 @@ Outcome options_of(const char* fn, const cyc_nway_options* c, int n, NwayOptions
   TRY(check_doubles(fn, "options.s", c->s, 3));
   TRY(check_double(fn, "options.r", c->r));
   TRY(check_double(fn, "options.r_fraction", c->r_fraction));
+  // (65): r in (0, bound); r = 0 takes r_fraction * bound.
+  if (c->r < 0)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: options.r = %.17g is negative", fn, c->r);
+  if (c->r == 0 && !(c->r_fraction > 0 && c->r_fraction < 1))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: options.r_fraction = %.17g is not in (0, 1) "
+                "(with options.r = 0 the radius is r_fraction times the bound (65))", fn,
+                c->r_fraction);
   // lambda[] is read for the n ends unless chosen automatically.
   if (!c->auto_lambda) TRY(check_doubles(fn, "options.lambda", c->lambda, size_t(n)));
   o.center = NwayCenter(c->center);
@@ -96,9 +103,6 @@ Outcome explain_failure(const char* fn, Status s, const NwayReport& R, const Nwa
         return fail(int(s), "%s: the sphere's radius r = %.17g (options.r, or "
                     "options.r_fraction times the bound) is outside (0, %.17g) (65)", fn, S.r,
                     S.bound);
-      if (!(o.r_fraction > 0 && o.r_fraction < 1))
-        return fail(int(s), "%s: options.r_fraction = %.17g is not in (0, 1)", fn,
-                    o.r_fraction);
       for (int i = 0; i < kMaxNwayEnds; ++i)
         if (!o.auto_lambda && !(o.lambda[i] > 0 && o.lambda[i] < 1))
           return fail(int(s), "%s: options.lambda[%d] = %.17g is not in (0, 1)", fn, i,
