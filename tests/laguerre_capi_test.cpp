@@ -169,7 +169,7 @@ TEST_F(LaguerreCapi, CycleParaboloidHoldsExactlyTheTouchingPlanes24) {
   int on = 7;
   cyc_isotropic_point y{0, {0, 0, 0}, 0};
   EXPECT_EQ(cyc_paraboloid_contains(ctx, &P, &y, 2.0, &on), CYC_E_INVALID_ARGUMENT);
-  EXPECT_EQ(cyc_paraboloid_contains(ctx, &P, &y, kNaN, &on), CYC_E_INVALID_ARGUMENT);
+  EXPECT_EQ(cyc_paraboloid_contains(ctx, &P, &y, kNaN, &on), CYC_E_NOT_FINITE);  // §9b.2
   expect_message("cyc_paraboloid_contains");
   EXPECT_EQ(on, 7);
 }

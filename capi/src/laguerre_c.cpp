@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdarg>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 #include "capi_internal.hpp"
@@ -52,18 +54,40 @@ namespace {
 
 // ------------------------------------------------------------ inputs
 
-Outcome finite_in(const char* fn, const char* name, const double* x, int n) {
-  for (int i = 0; i < n; ++i)
-    if (beyond_input_range(x[i]))
-      return fail(CYC_E_NOT_FINITE, "%s: %s[%d] = %.17g is NaN, infinite or beyond 1e100", fn,
-                  name, i, x[i]);
-  return ok();
+// The shared checks (capi_internal.hpp) with a name built at run time, for
+// entries of arrays of structs: e.g. "data[7].normal", then "[2]".
+#if defined(__GNUC__)
+__attribute__((format(printf, 5, 6)))
+#endif
+Outcome check_doubles_named(const char* fn, const double* x, size_t n, char (&name)[96],
+                            const char* fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  std::vsnprintf(name, sizeof name, fmt, ap);
+  va_end(ap);
+  return check_doubles(fn, name, x, n);
 }
 
-Outcome scalar_in(const char* fn, const char* name, double x) {
-  if (beyond_input_range(x))
-    return fail(CYC_E_NOT_FINITE, "%s: %s = %.17g is NaN, infinite or beyond 1e100", fn, name, x);
-  return ok();
+// What a core status means for this family, in its own words (the shared
+// explain() texts of other constructions do not apply here).
+Outcome failure(const char* fn, Status s) {
+  switch (s) {
+    case Status::numerical_overflow:
+      return fail(int(s), "%s: a value computed from the inputs overflows the double range", fn);
+    case Status::not_finite:
+      return fail(int(s), "%s: a value computed from the inputs is beyond the input range 1e100",
+                  fn);
+    case Status::collinear_points:
+      return fail(int(s),
+                  "%s: the domain triangle or parallelogram is degenerate (its vertices are "
+                  "collinear to rounding)",
+                  fn);
+    case Status::degenerate_cyclide:
+      return fail(int(s), "%s: a = b = 0: the parabolic cyclide's normal form is a point", fn);
+    case Status::point_at_infinity:
+      return fail(int(s), "%s: the point lies at infinity (its homogeneous weight vanishes)", fn);
+    default: return from_core(fn, s);
+  }
 }
 
 OrientedPlane plane_in(const cyc_oriented_plane& p) {
@@ -75,9 +99,11 @@ OrientedPlane plane_in(const cyc_oriented_plane& p) {
 
 Outcome plane_checked(const char* fn, const char* name, const cyc_oriented_plane& p,
                       OrientedPlane& out) {
-  if (beyond_input_range(p.e0))
-    return fail(CYC_E_NOT_FINITE, "%s: %s->e0 is NaN, infinite or beyond 1e100", fn, name);
-  if (Outcome r = finite_in(fn, name, p.e, 3); r.status) return r;
+  char field[96];
+  std::snprintf(field, sizeof field, "%s->e0", name);
+  TRY(check_double(fn, field, p.e0));
+  std::snprintf(field, sizeof field, "%s->e", name);
+  TRY(check_doubles(fn, field, p.e, 3));
   out = plane_in(p);
   return ok();
 }
@@ -96,12 +122,14 @@ Outcome point_checked(const char* fn, const char* name, const cyc_isotropic_poin
                 y.exceptional);
   IsotropicPoint Y;
   Y.exceptional = y.exceptional == 1;
+  char field[96];
   if (Y.exceptional) {
-    if (beyond_input_range(y.c))
-      return fail(CYC_E_NOT_FINITE, "%s: %s->c is NaN, infinite or beyond 1e100", fn, name);
+    std::snprintf(field, sizeof field, "%s->c", name);
+    TRY(check_double(fn, field, y.c));
     Y.c = y.c;
   } else {
-    if (Outcome r = finite_in(fn, name, y.y, 3); r.status) return r;
+    std::snprintf(field, sizeof field, "%s->y", name);
+    TRY(check_doubles(fn, field, y.y, 3));
     Y.y = vec(y.y);
   }
   out = Y;
@@ -118,7 +146,9 @@ Outcome point_out(const char* fn, const IsotropicPoint& Y, cyc_isotropic_point* 
                        beyond_input_range(Y.y[2]));
   if (out_of_range)
     return fail(CYC_E_NUMERICAL_OVERFLOW,
-                "%s: the result is beyond 1e100 (not usable as an input)", fn);
+                "%s: the resulting isotropic point is beyond the input range 1e100 (it could "
+                "not be passed back)",
+                fn);
   cyc_isotropic_point y;
   std::memset(&y, 0, sizeof y);
   y.exceptional = Y.exceptional ? 1 : 0;
@@ -132,13 +162,19 @@ Outcome point_out(const char* fn, const IsotropicPoint& Y, cyc_isotropic_point* 
 
 Outcome plane_out(const char* fn, const OrientedPlane& P, cyc_oriented_plane* out) {
   if (!std::isfinite(P.e0) || !P.e.allFinite())
-    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result overflows", fn);
+    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the resulting plane overflows the double range",
+                fn);
   *out = c_plane_of(P);
   return ok();
 }
 
-// A caller's cyclide as the core's, validated (the core's check).
+// A caller's cyclide as the core's, validated: every field through the
+// shared checks (named c->a, c->frame[4], ...), then the core's check.
 Outcome cyclide_in(const char* fn, const cyc_parabolic_cyclide& c, ParabolicCyclide& out) {
+  TRY(check_double(fn, "c->a", c.a));
+  TRY(check_double(fn, "c->b", c.b));
+  TRY(check_doubles(fn, "c->frame", c.frame, 9));
+  TRY(check_doubles(fn, "c->origin", c.origin, 3));
   ParabolicCyclide C;
   C.a = c.a;
   C.b = c.b;
@@ -149,10 +185,11 @@ Outcome cyclide_in(const char* fn, const cyc_parabolic_cyclide& c, ParabolicCycl
     return fail(int(s), "%s: a, b, frame or origin of the cyclide is NaN, infinite or beyond 1e100",
                 fn);
   if (s == Status::invalid_argument)
-    return fail(int(s), "%s: the cyclide's frame is not a rotation (to 1e-12)", fn);
+    return fail(int(s),
+                "%s: c->frame is not a rotation (its columns orthonormal to 1e-12, det > 0)", fn);
   if (s == Status::degenerate_cyclide)
-    return fail(int(s), "%s: a = b = 0: the normal form is a point, not a surface", fn);
-  if (s != Status::ok) return from_core(fn, s);
+    return fail(int(s), "%s: c->a = c->b = 0: the normal form is a point, not a surface", fn);
+  if (s != Status::ok) return failure(fn, s);
   out = C;
   return ok();
 }
@@ -231,14 +268,9 @@ RationalBicubicPatch bicubic_in(const cyc_rational_bicubic_patch& p) {
 Outcome patch_eval_failure(const char* fn, Status s) {
   if (s == Status::point_at_infinity)
     return fail(int(s), "%s: the weight vanishes here: the point lies at infinity", fn);
-  if (s == Status::numerical_overflow) return fail(int(s), "%s: the point overflows", fn);
-  return from_core(fn, s);
-}
-
-Outcome domain_failure(const char* fn, Status s) {
-  if (s == Status::collinear_points)
-    return fail(int(s), "%s: the domain triangle or parallelogram is degenerate (collinear)", fn);
-  return from_core(fn, s);
+  if (s == Status::numerical_overflow)
+    return fail(int(s), "%s: the point overflows the double range", fn);
+  return failure(fn, s);
 }
 
 // ------------------------------------------------------------ workspace
@@ -327,10 +359,10 @@ int cyc_laguerre_to_isotropic(cyc_context* ctx, const cyc_oriented_plane* plane,
     IsotropicPoint Y;
     const Status s = laguerre_to_isotropic(P, Y);
     if (s == Status::invalid_argument)
-      return fail(int(s), "%s: the plane's normal e is zero", fn);
+      return fail(int(s), "%s: plane->e is zero: the plane has no normal", fn);
     if (s == Status::numerical_overflow)
       return fail(int(s), "%s: the normal is within ~1e-154 of W = (0, 0, 1): y overflows", fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s != Status::ok) return failure(fn, s);
     return point_out(fn, Y, out);
   });
 }
@@ -344,7 +376,7 @@ int cyc_isotropic_to_laguerre(cyc_context* ctx, const cyc_isotropic_point* y,
     IsotropicPoint Y;
     if (Outcome r = point_checked(fn, "y", *y, Y); r.status) return r;
     OrientedPlane P;
-    if (Status s = isotropic_to_laguerre(Y, P); s != Status::ok) return from_core(fn, s);
+    if (Status s = isotropic_to_laguerre(Y, P); s != Status::ok) return failure(fn, s);
     return plane_out(fn, P, out);
   });
 }
@@ -354,14 +386,15 @@ int cyc_cycle_paraboloid(cyc_context* ctx, const cyc_cycle* cycle, cyc_isotropic
   return run(ctx, fn, [&] {
     REQUIRE(cycle);
     REQUIRE(out);
-    if (Outcome r = finite_in(fn, "cycle->m", cycle->m, 3); r.status) return r;
-    if (Outcome r = scalar_in(fn, "cycle->r", cycle->r); r.status) return r;
+    TRY(check_doubles(fn, "cycle->m", cycle->m, 3));
+    TRY(check_double(fn, "cycle->r", cycle->r));
     Cycle Z;
     Z.m = vec(cycle->m);
     Z.r = cycle->r;
     const IsotropicParaboloid P = cycle_to_paraboloid(Z);
     if (!std::isfinite(P.k) || !std::isfinite(P.c0))
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the coefficients overflow", fn);
+      return fail(CYC_E_NUMERICAL_OVERFLOW,
+                  "%s: the paraboloid's coefficients overflow the double range", fn);
     *out = cyc_isotropic_paraboloid{P.k, P.l1, P.l2, P.c0};
     return ok();
   });
@@ -374,8 +407,11 @@ int cyc_paraboloid_contains(cyc_context* ctx, const cyc_isotropic_paraboloid* p,
     REQUIRE(p);
     REQUIRE(y);
     REQUIRE(out);
-    const double k[4] = {p->k, p->l1, p->l2, p->c0};
-    if (Outcome r = finite_in(fn, "paraboloid", k, 4); r.status) return r;
+    TRY(check_double(fn, "p->k", p->k));
+    TRY(check_double(fn, "p->l1", p->l1));
+    TRY(check_double(fn, "p->l2", p->l2));
+    TRY(check_double(fn, "p->c0", p->c0));
+    TRY(check_double(fn, "tol", tol));
     if (!(tol >= 0 && tol < 1))
       return fail(CYC_E_INVALID_ARGUMENT, "%s: tol = %.17g is not in [0, 1)", fn, tol);
     IsotropicPoint Y;
@@ -396,7 +432,7 @@ int cyc_isotropic_translate(cyc_context* ctx, const cyc_isotropic_point* y, cons
     REQUIRE(out);
     IsotropicPoint Y;
     if (Outcome r = point_checked(fn, "y", *y, Y); r.status) return r;
-    if (Outcome r = finite_in(fn, "t", t, 3); r.status) return r;
+    TRY(check_doubles(fn, "t", t, 3));
     return point_out(fn, isotropic_translate(Y, vec(t)), out);
   });
 }
@@ -410,7 +446,7 @@ int cyc_plane_translate(cyc_context* ctx, const cyc_oriented_plane* p, const dou
     REQUIRE(out);
     OrientedPlane P;
     if (Outcome r = plane_checked(fn, "p", *p, P); r.status) return r;
-    if (Outcome r = finite_in(fn, "t", t, 3); r.status) return r;
+    TRY(check_doubles(fn, "t", t, 3));
     return plane_out(fn, translate(P, vec(t)), out);
   });
 }
@@ -423,7 +459,7 @@ int cyc_isotropic_dilatation(cyc_context* ctx, const cyc_isotropic_point* y, dou
     REQUIRE(out);
     IsotropicPoint Y;
     if (Outcome r = point_checked(fn, "y", *y, Y); r.status) return r;
-    if (Outcome r = scalar_in(fn, "d", d); r.status) return r;
+    TRY(check_double(fn, "d", d));
     return point_out(fn, isotropic_dilatation(Y, d), out);
   });
 }
@@ -436,7 +472,7 @@ int cyc_plane_dilatation(cyc_context* ctx, const cyc_oriented_plane* p, double d
     REQUIRE(out);
     OrientedPlane P;
     if (Outcome r = plane_checked(fn, "p", *p, P); r.status) return r;
-    if (Outcome r = scalar_in(fn, "d", d); r.status) return r;
+    TRY(check_double(fn, "d", d));
     return plane_out(fn, dilatation(P, d), out);
   });
 }
@@ -455,18 +491,27 @@ int cyc_pn_surface_create(cyc_context* ctx, int degree_u, int degree_v, const do
     if (degree_u > kMaxPnDegree || degree_v > kMaxPnDegree)
       return fail(CYC_E_DEGREE_TOO_HIGH, "%s: degrees (%d, %d) exceed %d", fn, degree_u,
                   degree_v, kMaxPnDegree);
-    const int count = (degree_u + 1) * (degree_v + 1);
-    if (Outcome r = finite_in(fn, "control", control, 4 * count); r.status) return r;
+    const int count = (degree_u + 1) * (degree_v + 1);  // <= 81: the degrees are checked
+    TRY(check_doubles(fn, "control", control, 4 * size_t(count)));
+    for (int k = 0; k < count; ++k) {
+      const double w = control[4 * k];
+      if (!(w > 0))
+        return fail(CYC_E_INVALID_ARGUMENT,
+                    "%s: control[%d] = %.17g: the weight of control point %d is not > 0", fn,
+                    4 * k, w, k);
+      for (int c = 1; c < 4; ++c)
+        if (beyond_input_range(control[4 * k + c] / w))
+          return fail(CYC_E_NOT_FINITE,
+                      "%s: control point %d: control[%d] / control[%d] = %.17g is beyond the "
+                      "input range 1e100 (the affine point w y / w)",
+                      fn, k, 4 * k + c, 4 * k, control[4 * k + c] / w);
+    }
     Vec4d P[(kMaxPnDegree + 1) * (kMaxPnDegree + 1)];
     for (int k = 0; k < count; ++k)
       P[k] = Vec4d(control[4 * k], control[4 * k + 1], control[4 * k + 2], control[4 * k + 3]);
     PnSurface S;
     const Status s = make_pn_surface(P, degree_u, degree_v, S);
-    if (s == Status::invalid_argument)
-      return fail(int(s), "%s: a control weight is <= 0", fn);
-    if (s == Status::not_finite)
-      return fail(int(s), "%s: an affine control point w y / w is beyond 1e100", fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s != Status::ok) return failure(fn, s);
     cyc_pn_surface* h = allocate<cyc_pn_surface>(ctx->allocator);
     if (!h) return fail(CYC_E_OUT_OF_MEMORY, "%s: allocator returned NULL", fn);
     h->surface = S;
@@ -481,11 +526,15 @@ static Outcome pn_failure(const char* fn, Status s, double u, double v) {
   switch (s) {
     case Status::bad_domain:
       return fail(int(s), "%s: (u, v) = (%.17g, %.17g) is outside [0, 1]^2", fn, u, v);
-    case Status::developable:
     case Status::point_at_infinity:
+      return fail(int(s),
+                  "%s: an isotropic line touches Psi here (det of the map (u, v) -> (y1, y2) "
+                  "vanishes): the envelope point is at infinity (at u = %.17g, v = %.17g)",
+                  fn, u, v);
+    case Status::developable:
     case Status::numerical_overflow:
       return fail(int(s), "%s: %s (at u = %.17g, v = %.17g)", fn, explain(s), u, v);
-    default: return from_core(fn, s);
+    default: return failure(fn, s);
   }
 }
 
@@ -495,6 +544,9 @@ int cyc_pn_surface_eval(cyc_context* ctx, const cyc_pn_surface* surface, double 
   return run(ctx, fn, [&] {
     REQUIRE(surface);
     REQUIRE(out);
+    TRY(check_double(fn, "u", u));
+    TRY(check_double(fn, "v", v));
+    TRY(check_double(fn, "d", d));
     PnPoint P;
     if (Status s = pn_surface_eval(surface->surface, u, v, d, P); s != Status::ok)
       return pn_failure(fn, s, u, v);
@@ -518,20 +570,22 @@ int cyc_pn_surface_eval_grid(cyc_context* ctx, const cyc_pn_surface* surface, co
     REQUIRE(surface);
     if (nu) REQUIRE(us);
     if (nv) REQUIRE(vs);
-    if (nv && nu > SIZE_MAX / nv) return fail(CYC_E_INVALID_ARGUMENT, "%s: nu*nv overflows", fn);
-    const size_t count = nu * nv;
+    size_t count = 0;
+    if (!size_product(nu, nv, count))
+      return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
+                  nu, nv);
     if (Outcome o = check_buffer(fn, "points", points, count); o.status) return o;
     if (Outcome o = check_buffer(fn, "normals", normals, count); o.status) return o;
-    if (Outcome r = scalar_in(fn, "d", d); r.status) return r;
+    TRY(check_double(fn, "d", d));
     // Every parameter first: nothing is written unless the call is valid.
+    if (nu) TRY(check_doubles(fn, "us", us, nu));
+    if (nv) TRY(check_doubles(fn, "vs", vs, nv));
     for (size_t i = 0; i < nu; ++i)
       if (!(us[i] >= 0 && us[i] <= 1))
-        return fail(std::isnan(us[i]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
-                    "%s: us[%zu] = %.17g is outside [0, 1]", fn, i, us[i]);
+        return fail(CYC_E_BAD_DOMAIN, "%s: us[%zu] = %.17g is outside [0, 1]", fn, i, us[i]);
     for (size_t j = 0; j < nv; ++j)
       if (!(vs[j] >= 0 && vs[j] <= 1))
-        return fail(std::isnan(vs[j]) ? CYC_E_NOT_FINITE : CYC_E_BAD_DOMAIN,
-                    "%s: vs[%zu] = %.17g is outside [0, 1]", fn, j, vs[j]);
+        return fail(CYC_E_BAD_DOMAIN, "%s: vs[%zu] = %.17g is outside [0, 1]", fn, j, vs[j]);
     size_t bad_points = 0;
     PnPoint P;
     for (size_t i = 0; i < nu; ++i)
@@ -555,13 +609,15 @@ int cyc_parabolic_cyclide_from_quadratic(cyc_context* ctx, const cyc_graph_quadr
   return run(ctx, fn, [&] {
     REQUIRE(q);
     REQUIRE(out);
-    if (Outcome r = finite_in(fn, "q->q", q->q, 6); r.status) return r;
+    TRY(check_doubles(fn, "q->q", q->q, 6));
     ParabolicCyclide C;
     const Status s = parabolic_cyclide_from_quadratic(quadratic_in(*q), C);
     if (s == Status::degenerate_cyclide)
-      return fail(int(s), "%s: a = b = 0 (to 1e-14 of the coefficients): the cyclide is a point",
+      return fail(int(s),
+                  "%s: a = b = 0 (to 1e-14 of the coefficients q->q): the graph is the "
+                  "paraboloid of a point cycle, its cyclide a point",
                   fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s != Status::ok) return failure(fn, s);
     *out = c_cyclide_of(C);
     return ok();
   });
@@ -578,8 +634,11 @@ int cyc_parabolic_cyclide_quadratic(cyc_context* ctx, const cyc_parabolic_cyclid
     GraphQuadratic Q;
     const Status s = quadratic_of_parabolic_cyclide(C, Q);
     if (s == Status::invalid_argument)
-      return fail(int(s), "%s: the frame is not a rotation about x3: not a cyclide of G", fn);
-    if (s != Status::ok) return from_core(fn, s);
+      return fail(int(s),
+                  "%s: c->frame is not a rotation about x3 (to 1e-12): the cyclide is not of "
+                  "the family G of graph quadratics",
+                  fn);
+    if (s != Status::ok) return failure(fn, s);
     *out = c_quadratic_of(Q);
     return ok();
   });
@@ -594,13 +653,16 @@ int cyc_parabolic_cyclide_eval(cyc_context* ctx, const cyc_parabolic_cyclide* c,
       return fail(CYC_E_NULL_ARGUMENT, "%s: point and normal are both NULL", fn);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    if (Outcome r = scalar_in(fn, "u", u); r.status) return r;
-    if (Outcome r = scalar_in(fn, "v", v); r.status) return r;
+    TRY(check_double(fn, "u", u));
+    TRY(check_double(fn, "v", v));
     Vec3d x, n;
     if (Status s = parabolic_cyclide_point(C, u, v, x); s != Status::ok)
-      return from_core_at(fn, s, u);
+      return fail(int(s), "%s: the point (4.1) overflows the double range at (u, v) = (%.17g, %.17g)",
+                  fn, u, v);
     if (Status s = parabolic_cyclide_normal(C, u, v, n); s != Status::ok)
-      return from_core_at(fn, s, u);
+      return fail(int(s),
+                  "%s: the normal (4.3) overflows the double range at (u, v) = (%.17g, %.17g)", fn,
+                  u, v);
     if (point) put3(point, x);
     if (normal) put3(normal, n);
     return ok();
@@ -616,9 +678,10 @@ int cyc_parabolic_cyclide_implicit(cyc_context* ctx, const cyc_parabolic_cyclide
     REQUIRE(out);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    if (Outcome r = finite_in(fn, "x", x, 3); r.status) return r;
+    TRY(check_doubles(fn, "x", x, 3));
     const double F = parabolic_cyclide_implicit(C, vec(x));
-    if (!std::isfinite(F)) return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: (4.2) overflows at x", fn);
+    if (!std::isfinite(F))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the implicit equation (4.2) overflows at x", fn);
     *out = F;
     return ok();
   });
@@ -629,8 +692,8 @@ int cyc_parabolic_cyclide_type(cyc_context* ctx, const cyc_parabolic_cyclide* c,
   return run(ctx, fn, [&] {
     REQUIRE(c);
     REQUIRE(out);
-    if (Outcome r = scalar_in(fn, "c->a", c->a); r.status) return r;
-    if (Outcome r = scalar_in(fn, "c->b", c->b); r.status) return r;
+    TRY(check_double(fn, "c->a", c->a));
+    TRY(check_double(fn, "c->b", c->b));
     *out = int(parabolic_cyclide_type(c->a, c->b));
     return ok();
   });
@@ -646,7 +709,7 @@ int cyc_parabolic_cyclide_lines(cyc_context* ctx, const cyc_parabolic_cyclide* c
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
     const Line3 E = parabolic_line_e(C), F = parabolic_line_f(C);
     if (!E.point.allFinite() || !F.point.allFinite())
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the lines overflow", fn);
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the lines' points overflow the double range", fn);
     if (e) put3(e->point, E.point), put3(e->direction, E.direction);
     if (f) put3(f->point, F.point), put3(f->direction, F.direction);
     return ok();
@@ -660,12 +723,13 @@ static int parameter_circle(cyc_context* ctx, const char* fn, const cyc_paraboli
     REQUIRE(out);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    if (Outcome r = scalar_in(fn, u_circle ? "u" : "v", w); r.status) return r;
+    const char* name = u_circle ? "u" : "v";
+    TRY(check_double(fn, name, w));
     Circle3 K;
     const Status s = u_circle ? parabolic_u_circle(C, w, K) : parabolic_v_circle(C, w, K);
-    if (s != Status::ok) return from_core_at(fn, s, w);
-    if (!K.centre.allFinite() || !std::isfinite(K.radius * K.radius))
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the circle overflows", fn);
+    if (s != Status::ok || !K.centre.allFinite() || !std::isfinite(K.radius * K.radius))
+      return fail(CYC_E_NUMERICAL_OVERFLOW,
+                  "%s: the parameter circle %s = %.17g overflows the double range", fn, name, w);
     cyc_circle k;
     put3(k.center, K.centre);
     put3(k.normal, K.normal);
@@ -693,16 +757,16 @@ int cyc_parabolic_cyclide_cone(cyc_context* ctx, const cyc_parabolic_cyclide* c,
     REQUIRE(out);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    if (Outcome r = scalar_in(fn, "lambda", lambda); r.status) return r;
-    if (Outcome r = scalar_in(fn, "mu", mu); r.status) return r;
+    TRY(check_double(fn, "lambda", lambda));
+    TRY(check_double(fn, "mu", mu));
     RevolutionCone K;
     const Status s = cubic_circle_cone(C, lambda, mu, K);
     if (s == Status::dependent_planes)
       return fail(int(s), "%s: mu = 0 and a + b lambda^2 = 0: the planes form a pencil, no cone",
                   fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s != Status::ok) return failure(fn, s);
     if (!K.apex.allFinite() || !K.axis.allFinite() || !std::isfinite(K.half_angle))
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the cone overflows", fn);
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the cone's apex overflows the double range", fn);
     cyc_revolution_cone k;
     std::memset(&k, 0, sizeof k);
     put3(k.apex, K.apex);
@@ -723,11 +787,19 @@ int cyc_parabolic_cyclide_cubic_circle_point(cyc_context* ctx, const cyc_parabol
     REQUIRE(x);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    const double p[3] = {lambda, mu, t};
-    if (Outcome r = finite_in(fn, "(lambda, mu, t)", p, 3); r.status) return r;
+    TRY(check_double(fn, "lambda", lambda));
+    TRY(check_double(fn, "mu", mu));
+    TRY(check_double(fn, "t", t));
     Vec3d X;
-    if (Status s = cubic_circle_point(C, lambda, mu, t, X); s != Status::ok)
-      return from_core_at(fn, s, t);
+    if (Status s = cubic_circle_point(C, lambda, mu, t, X); s == Status::not_finite)
+      return fail(int(s),
+                  "%s: the cubic circle's parameter v = lambda t + mu = %.17g is beyond the "
+                  "input range 1e100 (at t = %.17g)",
+                  fn, lambda * t + mu, t);
+    else if (s != Status::ok)
+      return fail(int(s),
+                  "%s: the point of the cubic circle overflows the double range at t = %.17g",
+                  fn, t);
     put3(x, X);
     return ok();
   });
@@ -735,11 +807,14 @@ int cyc_parabolic_cyclide_cubic_circle_point(cyc_context* ctx, const cyc_parabol
 
 static Outcome net_failure(const char* fn, Status s) {
   if (s == Status::invalid_argument)
-    return fail(int(s), "%s: the cyclide is a sphere (a = b): e and f meet, no net", fn);
+    return fail(int(s),
+                "%s: the cyclide is a sphere (c->a = c->b): its lines e and f meet, so there is "
+                "no net of lines (Remark 4.2)",
+                fn);
   if (s == Status::point_at_infinity)
     return fail(int(s),
                 "%s: x lies in a plane x3 = a or x3 = b: its net parameter is at infinity", fn);
-  return from_core(fn, s);
+  return failure(fn, s);
 }
 
 int cyc_parabolic_cyclide_net_projection(cyc_context* ctx, const cyc_parabolic_cyclide* c,
@@ -751,11 +826,12 @@ int cyc_parabolic_cyclide_net_projection(cyc_context* ctx, const cyc_parabolic_c
     REQUIRE(out);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    if (Outcome r = finite_in(fn, "x", x, 3); r.status) return r;
-    if (Outcome r = scalar_in(fn, "cc", cc); r.status) return r;
+    TRY(check_doubles(fn, "x", x, 3));
+    TRY(check_double(fn, "cc", cc));
     Vec2d p;
     if (Status s = net_projection(C, vec(x), cc, p); s != Status::ok) return net_failure(fn, s);
-    if (!p.allFinite()) return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result overflows", fn);
+    if (!p.allFinite())
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result overflows the double range", fn);
     out[0] = p[0];
     out[1] = p[1];
     return ok();
@@ -771,10 +847,11 @@ int cyc_parabolic_cyclide_parameter_of(cyc_context* ctx, const cyc_parabolic_cyc
     REQUIRE(uv);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
-    if (Outcome r = finite_in(fn, "x", x, 3); r.status) return r;
+    TRY(check_doubles(fn, "x", x, 3));
     Vec2d p;
     if (Status s = parameter_of(C, vec(x), p); s != Status::ok) return net_failure(fn, s);
-    if (!p.allFinite()) return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result overflows", fn);
+    if (!p.allFinite())
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result overflows the double range", fn);
     uv[0] = p[0];
     uv[1] = p[1];
     return ok();
@@ -789,11 +866,19 @@ int cyc_parabolic_cyclide_surface_create(cyc_context* ctx, const cyc_parabolic_c
     REQUIRE(out);
     ParabolicCyclide C;
     if (Outcome r = cyclide_in(fn, *c, C); r.status) return r;
+    TRY(check_double(fn, "u0", u0));
+    TRY(check_double(fn, "u1", u1));
     Surface S;
     double bad_u = u0;
     const Status s = make_parabolic_cyclide_surface(C, u0, u1, S, &bad_u);
-    if (s == Status::singular_point) return from_core_at(fn, s, bad_u);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s == Status::singular_point)
+      return fail(int(s),
+                  "%s: the u-circle at u = %.17g has radius 0 (a singular point of the horn "
+                  "cyclide) inside [u0, u1]",
+                  fn, bad_u);
+    if (s == Status::bad_domain)
+      return fail(int(s), "%s: [u0, u1] = [%.17g, %.17g] is empty or reversed", fn, u0, u1);
+    if (s != Status::ok) return failure(fn, s);
     return emit(fn, ctx, out, S);
   });
 }
@@ -806,11 +891,11 @@ int cyc_cyclide_cubic_triangle(cyc_context* ctx, const cyc_quadratic_graph_trian
   return run(ctx, fn, [&] {
     REQUIRE(tri);
     REQUIRE(out);
-    if (Outcome r = finite_in(fn, "tri->vertex", &tri->vertex[0][0], 6); r.status) return r;
-    if (Outcome r = finite_in(fn, "tri->ordinate", tri->ordinate, 6); r.status) return r;
+    TRY(check_rows(fn, "tri->vertex", &tri->vertex[0][0], 3, 2, 2));
+    TRY(check_doubles(fn, "tri->ordinate", tri->ordinate, 6));
     RationalCubicTriangle T;
     if (Status s = cyclide_cubic_triangle(graph_triangle_in(*tri), T); s != Status::ok)
-      return domain_failure(fn, s);
+      return failure(fn, s);
     put_cubic(T, *out);
     return ok();
   });
@@ -826,15 +911,15 @@ int cyc_cyclide_bicubic_patch(cyc_context* ctx, const cyc_graph_quadratic* q,
     REQUIRE(e1);
     REQUIRE(e2);
     REQUIRE(out);
-    if (Outcome r = finite_in(fn, "q->q", q->q, 6); r.status) return r;
-    if (Outcome r = finite_in(fn, "corner", corner, 2); r.status) return r;
-    if (Outcome r = finite_in(fn, "e1", e1, 2); r.status) return r;
-    if (Outcome r = finite_in(fn, "e2", e2, 2); r.status) return r;
+    TRY(check_doubles(fn, "q->q", q->q, 6));
+    TRY(check_doubles(fn, "corner", corner, 2));
+    TRY(check_doubles(fn, "e1", e1, 2));
+    TRY(check_doubles(fn, "e2", e2, 2));
     RationalBicubicPatch P;
     if (Status s = cyclide_bicubic_patch(quadratic_in(*q), Vec2d(corner[0], corner[1]),
                                          Vec2d(e1[0], e1[1]), Vec2d(e2[0], e2[1]), P);
         s != Status::ok)
-      return domain_failure(fn, s);
+      return failure(fn, s);
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) put4(out->control[i][j], P.control[i][j]);
     return ok();
@@ -847,9 +932,10 @@ int cyc_cubic_triangle_eval(cyc_context* ctx, const cyc_rational_cubic_triangle*
   return run(ctx, fn, [&] {
     REQUIRE(T);
     REQUIRE(x);
-    if (Outcome o = finite_in(fn, "T->control", &T->control[0][0], 40); o.status) return o;
-    const double p[3] = {r, s, t};
-    if (Outcome o = finite_in(fn, "(r, s, t)", p, 3); o.status) return o;
+    TRY(check_rows(fn, "T->control", &T->control[0][0], 10, 4, 4));
+    TRY(check_double(fn, "r", r));
+    TRY(check_double(fn, "s", s));
+    TRY(check_double(fn, "t", t));
     Vec3d X;
     if (Status st = evaluate(cubic_in(*T), r, s, t, X); st != Status::ok)
       return patch_eval_failure(fn, st);
@@ -864,9 +950,12 @@ int cyc_bicubic_patch_eval(cyc_context* ctx, const cyc_rational_bicubic_patch* P
   return run(ctx, fn, [&] {
     REQUIRE(P);
     REQUIRE(x);
-    if (Outcome o = finite_in(fn, "P->control", &P->control[0][0][0], 64); o.status) return o;
-    const double p[2] = {s, t};
-    if (Outcome o = finite_in(fn, "(s, t)", p, 2); o.status) return o;
+    char name[96];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        TRY(check_doubles_named(fn, P->control[i][j], 4, name, "P->control[%d][%d]", i, j));
+    TRY(check_double(fn, "s", s));
+    TRY(check_double(fn, "t", t));
     Vec3d X;
     if (Status st = evaluate(bicubic_in(*P), s, t, X); st != Status::ok)
       return patch_eval_failure(fn, st);
@@ -902,11 +991,8 @@ int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* w
     Vec2d* p = carve<Vec2d>(at, std::size_t(n));
     const std::size_t ints = delaunay_workspace_size(n);
     int* iwork = carve<int>(at, ints);
-    for (int i = 0; i < n; ++i) {
-      if (beyond_input_range(pts[2 * i]) || beyond_input_range(pts[2 * i + 1]))
-        return fail(CYC_E_NOT_FINITE, "%s: point %d is NaN, infinite or beyond 1e100", fn, i);
-      p[i] = Vec2d(pts[2 * i], pts[2 * i + 1]);
-    }
+    TRY(check_doubles(fn, "pts", pts, 2 * size_t(n)));
+    for (int i = 0; i < n; ++i) p[i] = Vec2d(pts[2 * i], pts[2 * i + 1]);
     int count = 0;
     DelaunayReport rep;
     const Status s = delaunay_triangulate(p, n, iwork, ints, reinterpret_cast<int(*)[3]>(tri),
@@ -917,7 +1003,9 @@ int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* w
                   rep.triangles_needed);
     }
     if (s == Status::invalid_argument)
-      return fail(int(s), "%s: points %d and %d are equal", fn, rep.first, rep.second);
+      return fail(int(s), "%s: points %d and %d are equal (pts[%d..%d] = pts[%d..%d])", fn,
+                  rep.first, rep.second, 2 * rep.first, 2 * rep.first + 1, 2 * rep.second,
+                  2 * rep.second + 1);
     if (s == Status::collinear_points)
       return fail(int(s), "%s: all points lie on one line: no triangle exists", fn);
     if (s == Status::numerical_overflow)
@@ -925,7 +1013,7 @@ int cyc_delaunay_triangulate(cyc_context* ctx, const double* pts, int n, void* w
                   "%s: point %d has a coordinate below 2^-190 of the largest: the exact "
                   "predicates would underflow",
                   fn, rep.first);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s != Status::ok) return failure(fn, s);
     *ntri = count;
     return ok();
   });
@@ -967,11 +1055,10 @@ int cyc_powell_sabin_interpolate(cyc_context* ctx, const double* b, const double
     const std::size_t ints = powell_sabin_workspace_size(ntri);
     int* iwork = carve<int>(at, ints);
     QuadraticGraphTriangle* micro = carve<QuadraticGraphTriangle>(at, 6 * std::size_t(ntri));
+    TRY(check_doubles(fn, "b", b, 2 * size_t(n)));
+    TRY(check_doubles(fn, "z", z, size_t(n)));
+    TRY(check_doubles(fn, "g", g, 2 * size_t(n)));
     for (int i = 0; i < n; ++i) {
-      if (beyond_input_range(b[2 * i]) || beyond_input_range(b[2 * i + 1]) ||
-          beyond_input_range(z[i]) || beyond_input_range(g[2 * i]) ||
-          beyond_input_range(g[2 * i + 1]))
-        return fail(CYC_E_NOT_FINITE, "%s: datum %d is NaN, infinite or beyond 1e100", fn, i);
       B[i] = Vec2d(b[2 * i], b[2 * i + 1]);
       G[i] = Vec2d(g[2 * i], g[2 * i + 1]);
     }
@@ -981,10 +1068,15 @@ int cyc_powell_sabin_interpolate(cyc_context* ctx, const double* b, const double
                                  ints, micro, 6 * ntri, count);
     if (s == Status::invalid_argument)
       return fail(int(s),
-                  "%s: the triangulation is invalid (index out of range, clockwise or zero-area "
-                  "triangle, or an edge used wrongly)",
+                  "%s: the triangulation tri is invalid (index out of range, clockwise or "
+                  "zero-area triangle, or an edge used wrongly)",
                   fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s == Status::numerical_overflow)
+      return fail(int(s),
+                  "%s: a coordinate of b is below 2^-190 of the largest (the exact predicates "
+                  "would underflow), or an ordinate overflows",
+                  fn);
+    if (s != Status::ok) return failure(fn, s);
     for (int k = 0; k < count; ++k) put_graph_triangle(micro[k], out[k]);
     *nout = count;
     return ok();
@@ -999,15 +1091,20 @@ int cyc_isotropic_datum_of(cyc_context* ctx, const cyc_oriented_point* a,
   return run(ctx, fn, [&] {
     REQUIRE(a);
     REQUIRE(out);
-    if (Outcome r = finite_in(fn, "a->point", a->point, 3); r.status) return r;
-    if (Outcome r = finite_in(fn, "a->normal", a->normal, 3); r.status) return r;
+    TRY(check_doubles(fn, "a->point", a->point, 3));
+    TRY(check_doubles(fn, "a->normal", a->normal, 3));
     OrientedPoint A;
     A.point = vec(a->point);
     A.normal = vec(a->normal);
     IsotropicDatum D;
     const Status s = isotropic_datum(A, D);
-    if (s == Status::invalid_argument) return fail(int(s), "%s: the normal is zero", fn);
-    if (s != Status::ok) return from_core(fn, s);
+    if (s == Status::invalid_argument) return fail(int(s), "%s: a->normal is zero", fn);
+    if (s == Status::pole_in_gauss_image)
+      return fail(int(s),
+                  "%s: a->normal is within 1e-12 of W = (0, 0, 1): its tangent plane has no "
+                  "point in the isotropic model (seed 004 §4.2)",
+                  fn);
+    if (s != Status::ok) return failure(fn, s);
     cyc_isotropic_datum d;
     d.b[0] = D.b[0], d.b[1] = D.b[1];
     d.z = D.z;
@@ -1023,14 +1120,15 @@ int cyc_oriented_point_of(cyc_context* ctx, const cyc_isotropic_datum* d,
   return run(ctx, fn, [&] {
     REQUIRE(d);
     REQUIRE(out);
-    const double v[5] = {d->b[0], d->b[1], d->z, d->g[0], d->g[1]};
-    if (Outcome r = finite_in(fn, "(b, z, g)", v, 5); r.status) return r;
+    TRY(check_doubles(fn, "d->b", d->b, 2));
+    TRY(check_double(fn, "d->z", d->z));
+    TRY(check_doubles(fn, "d->g", d->g, 2));
     IsotropicDatum D;
     D.b = Vec2d(d->b[0], d->b[1]);
     D.z = d->z;
     D.g = Vec2d(d->g[0], d->g[1]);
     OrientedPoint A;
-    if (Status s = oriented_point_from_isotropic(D, A); s != Status::ok) return from_core(fn, s);
+    if (Status s = oriented_point_from_isotropic(D, A); s != Status::ok) return failure(fn, s);
     cyc_oriented_point a;
     put3(a.point, A.point);
     put3(a.normal, A.normal);
@@ -1045,9 +1143,10 @@ int cyc_gauss_image_contains_pole(cyc_context* ctx, const cyc_oriented_point* da
   return run(ctx, fn, [&] {
     REQUIRE(data);
     REQUIRE(out);
-    if (n < 1) return fail(CYC_E_INVALID_ARGUMENT, "%s: n = %d < 1", fn, n);
+    TRY(check_range(fn, "n", n, 1, INT_MAX));
+    char name[96];
     for (int i = 0; i < n; ++i)
-      if (Outcome r = finite_in(fn, "data[i].normal", data[i].normal, 3); r.status) return r;
+      TRY(check_doubles_named(fn, data[i].normal, 3, name, "data[%d].normal", i));
     *out = gauss_image_contains_pole(reinterpret_cast<const OrientedPoint*>(data), n) ? 1 : 0;
     return ok();
   });
@@ -1109,15 +1208,15 @@ int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data,
     const std::size_t core_bytes =
         work_bytes - std::size_t(static_cast<unsigned char*>(core_work) -
                                  static_cast<unsigned char*>(work));
+    char name[96];
     for (int i = 0; i < n; ++i) {
-      const double v[6] = {data[i].point[0],  data[i].point[1],  data[i].point[2],
-                           data[i].normal[0], data[i].normal[1], data[i].normal[2]};
-      for (int k = 0; k < 6; ++k)
-        if (beyond_input_range(v[k])) {
-          rep.first_bad_datum = i;
-          give_report();
-          return fail(CYC_E_NOT_FINITE, "%s: datum %d is NaN, infinite or beyond 1e100", fn, i);
-        }
+      Outcome r = check_doubles_named(fn, data[i].point, 3, name, "data[%d].point", i);
+      if (!r.status) r = check_doubles_named(fn, data[i].normal, 3, name, "data[%d].normal", i);
+      if (r.status) {
+        rep.first_bad_datum = i;
+        give_report();
+        return r;
+      }
     }
     CyclideDesignOptions O;
     O.allow_ridges = options && options->allow_ridges;
@@ -1144,12 +1243,16 @@ int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data,
         }
         return fail(CYC_E_INTERNAL, "%s: the workspace computed is too small (a bug)", fn);
       case Status::invalid_argument:
+        if (R.first_bad_datum >= 0)
+          return fail(int(s), "%s: data[%d].normal is zero", fn, R.first_bad_datum);
         return fail(int(s),
-                    "%s: a bad triangulation, or two data with the same isotropic projection b_i",
+                    "%s: the triangulation tri is invalid (index out of range, clockwise or "
+                    "zero-area triangle in the (y1, y2) plane, or an edge used wrongly), or two "
+                    "data have the same isotropic projection b_i",
                     fn);
       case Status::pole_in_gauss_image:
         if (R.first_bad_datum >= 0)
-          return fail(int(s), "%s: datum %d: %s", fn, R.first_bad_datum, explain(s));
+          return fail(int(s), "%s: data[%d].normal: %s", fn, R.first_bad_datum, explain(s));
         return fail(int(s), "%s: W = (0, 0, 1) lies inside the cone of the normals: %s", fn,
                     explain(s));
       case Status::ridge:
@@ -1157,10 +1260,17 @@ int cyc_design_cyclide_surface(cyc_context* ctx, const cyc_oriented_point* data,
                     R.first_ridge_patch, explain(s));
       case Status::collinear_points:
         return fail(int(s), "%s: all isotropic projections b_i lie on one line", fn);
+      case Status::numerical_overflow:
+        if (R.first_bad_datum >= 0)
+          return fail(int(s),
+                      "%s: data[%d]: its isotropic datum overflows, or a coordinate of its b_i "
+                      "is below 2^-190 of the largest (the exact predicates would underflow)",
+                      fn, R.first_bad_datum);
+        return failure(fn, s);
       default:
         if (R.first_bad_datum >= 0)
-          return fail(int(s), "%s: datum %d: %s", fn, R.first_bad_datum, explain(s));
-        return from_core(fn, s);
+          return fail(int(s), "%s: data[%d]: %s", fn, R.first_bad_datum, explain(s));
+        return failure(fn, s);
     }
     for (int k = 0; k < count; ++k) {
       if (iso) put_graph_triangle(Q[k], iso[k]);
