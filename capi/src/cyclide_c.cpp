@@ -672,8 +672,8 @@ int cyc_surface_circle(cyc_context* ctx, const cyc_surface* surface, double u,
   const char* fn = "cyc_surface_circle";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
-    TRY(check_double(fn, "u", u));
     REQUIRE(out);
+    TRY(check_double(fn, "u", u));
     Vec3d c, n;
     double r2;
     if (Status s = surface->surface.circle(u, c, n, r2); s != Status::ok)
@@ -730,8 +730,8 @@ int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surface, doub
   const char* fn = "cyc_surface_ringed_sphere";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
-    TRY(check_double(fn, "u", u));
     REQUIRE(out);
+    TRY(check_double(fn, "u", u));
     RingedData R;
     if (Status s = surface->surface.ringed(u, R); s != Status::ok)
       return from_core_at(fn, s, u);
@@ -772,9 +772,9 @@ int cyc_surface_parameter_of(cyc_context* ctx, const cyc_surface* surface, doubl
   const char* fn = "cyc_surface_parameter_of";
   return run(ctx, fn, [&] {
     REQUIRE(surface);
-    TRY(check_double(fn, "u", u));
     REQUIRE(point);
     REQUIRE(v);
+    TRY(check_double(fn, "u", u));
     TRY(check_doubles(fn, "point", point, 3));
     double r;
     if (Status s = surface->surface.parameter_of(u, vec(point), r); s != Status::ok)

@@ -316,17 +316,15 @@ void cyc_pcurve_blend_options_init(cyc_pcurve_blend_options* options) {
   put3(options->v, d.v);
 }
 
-int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc_ringed_jet* b,
-                            const cyc_pcurve_blend_options* options, cyc_surface** pieces,
-                            int* count) {
-  return cyc_blend_ringed_pcurve_bump(ctx, a, b, options, nullptr, pieces, count);
-}
+}  // extern "C"
 
-int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
-                                 const cyc_ringed_jet* b, const cyc_pcurve_blend_options* options,
-                                 const cyc_directrix_bump* bump, cyc_surface** pieces,
-                                 int* count) {
-  const char* fn = bump ? "cyc_blend_ringed_pcurve_bump" : "cyc_blend_ringed_pcurve";
+namespace {
+
+// cyc_blend_ringed_pcurve (bump NULL) and cyc_blend_ringed_pcurve_bump; fn
+// names the entry point called.
+int pcurve_blend(const char* fn, cyc_context* ctx, const cyc_ringed_jet* a,
+                 const cyc_ringed_jet* b, const cyc_pcurve_blend_options* options,
+                 const cyc_directrix_bump* bump, cyc_surface** pieces, int* count) {
   return run(ctx, fn, [&] {
     REQUIRE(a);
     REQUIRE(b);
@@ -358,6 +356,23 @@ int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
     if (Outcome e = emit_pieces(fn, ctx, S, n, pieces, count); e.status) return e;
     return ok();
   });
+}
+
+}  // namespace
+
+extern "C" {
+
+int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a, const cyc_ringed_jet* b,
+                            const cyc_pcurve_blend_options* options, cyc_surface** pieces,
+                            int* count) {
+  return pcurve_blend("cyc_blend_ringed_pcurve", ctx, a, b, options, nullptr, pieces, count);
+}
+
+int cyc_blend_ringed_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
+                                 const cyc_ringed_jet* b, const cyc_pcurve_blend_options* options,
+                                 const cyc_directrix_bump* bump, cyc_surface** pieces,
+                                 int* count) {
+  return pcurve_blend("cyc_blend_ringed_pcurve_bump", ctx, a, b, options, bump, pieces, count);
 }
 
 int cyc_surface_contour_points(cyc_context* ctx, const cyc_surface* surface, double u,

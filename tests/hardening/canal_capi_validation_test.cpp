@@ -746,6 +746,11 @@ std::vector<DoubleRow> double_rows() {
           cyc_pcurve_blend_options o; cyc_pcurve_blend_options_init(&o); o.v[0] = z;
           return cyc_blend_ringed_pcurve(e.ctx, &e.a, &e.b, &o, e.o<cyc_surface*>(),
                                          e.o<int>(16));),
+      // Without a bump it is still this entry point that speaks.
+      ROW("cyc_blend_ringed_pcurve_bump", "a.rho", kInput,
+          cyc_ringed_jet a = e.a; a.rho = z;
+          return cyc_blend_ringed_pcurve_bump(e.ctx, &a, &e.b, nullptr, nullptr,
+                                              e.o<cyc_surface*>(), e.o<int>(16));),
       ROW("cyc_blend_ringed_pcurve_bump", "bump.w[1]", kInput,
           cyc_directrix_bump bump{{0, z, 1}, 0.5, CYC_BUMP_SINGLE};
           return cyc_blend_ringed_pcurve_bump(e.ctx, &e.a, &e.b, nullptr, &bump,
