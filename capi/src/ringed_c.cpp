@@ -300,9 +300,10 @@ int cyc_surface_ringed_jet(cyc_context* ctx, const cyc_surface* surface, double 
       return from_core_at(fn, s, u);
     }
     const cyc_ringed_jet C = c_jet_of(J);
-    if (Outcome e = check_jet(fn, "the jet", C); e.status)
-      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the jet at u = %.17g leaves the supported "
-                  "range (%s)", fn, u, e.text);
+    // The jet is an input of the P-curve blends: it must be one there.
+    if (check_jet(fn, "jet", C).status)
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the jet at u = %.17g leaves the input range "
+                  "|x| <= 1e100 (it could not be passed to a blend)", fn, u);
     *out = C;
     return ok();
   });
