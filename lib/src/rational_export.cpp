@@ -428,24 +428,53 @@ bool split_v(const Data& X, const VPiece& p, int depth, VPiece* out, int& n) {
          split_v(X, {p.rec, xm, p.x1, vm, p.v1}, depth + 1, out, n);
 }
 
-// The initial pieces: [v0, v1] split at -1 and 1 (E5).
-int initial_pieces(const ExportDomain& D, VPiece (&p)[3]) {
+// The circle parameter's own scale c (E5): at every sample u the half-angle
+// vector q(v) = A v + B, A = (alpha, |a| gamma), B = (beta, |a| delta),
+// turns by 90 degrees over v in [-c_i, c_i] about c_i = |B| / |A| (f = v:
+// q = (v, |a|), c_i = |a|, the length of the rotation axis of eq. (13)), and
+// c is their geometric mean. A model scaled by s has PRCS's v -> s v and
+// c -> s c, so the pieces split at +-c follow the surface, not the number 1.
+// 1 if a sample is degenerate (no scale to follow).
+double parameter_scale(const Data& X) {
+  double sum = 0.0;
+  for (int i = 0; i < kSamples; ++i) {
+    const double A = std::hypot(X.Wa1[i], X.na[i] * X.g[i]);
+    const double B = std::hypot(X.Wa0[i], X.na[i] * X.d[i]);
+    const double l = std::log(B) - std::log(A);
+    if (!std::isfinite(l)) return 1.0;
+    sum += l;
+  }
+  return std::exp(sum / kSamples);
+}
+
+// The initial pieces: [v0, v1] split at -1 and 1 (E5), the charts v and
+// w = 1/v (the evaluator's convention, and the NURBS form's tau), and
+// further at +-c when the parameter's scale c is far from 1 (|log2 c| > 3:
+// inside the chart that holds it), so that no piece needs more than a few
+// bisections (E5) to become an arc below 120 degrees however the model is
+// scaled: without it a PRCS scaled by 2^-20 squeezes almost its whole
+// circle into |v| < 2^-20 and exceeds kMaxExportDepth.
+int initial_pieces(const ExportDomain& D, double c, VPiece (&p)[5]) {
+  double cuts[4];
+  int nc = 0;
+  const bool far = !(std::abs(std::log2(c)) <= 3.0);
+  if (far && c < 1.0) cuts[nc++] = -1.0, cuts[nc++] = -c, cuts[nc++] = c, cuts[nc++] = 1.0;
+  else if (far) cuts[nc++] = -c, cuts[nc++] = -1.0, cuts[nc++] = 1.0, cuts[nc++] = c;
+  else cuts[nc++] = -1.0, cuts[nc++] = 1.0;
+  const double lo = D.whole_circle ? -HUGE_VAL : D.v0, hi = D.whole_circle ? HUGE_VAL : D.v1;
   int n = 0;
-  if (D.whole_circle) {
-    p[n++] = {true, -0.0, -1.0, -HUGE_VAL, -1.0};
-    p[n++] = {false, -1.0, 1.0, -1.0, 1.0};
-    p[n++] = {true, 1.0, 0.0, 1.0, HUGE_VAL};
-    return n;
-  }
-  if (D.v0 < -1.0) {
-    const double b = std::min(D.v1, -1.0);
-    p[n++] = {true, 1.0 / D.v0, 1.0 / b, D.v0, b};
-  }
-  const double a = std::max(D.v0, -1.0), b = std::min(D.v1, 1.0);
-  if (a < b) p[n++] = {false, a, b, a, b};
-  if (D.v1 > 1.0) {
-    const double c = std::max(D.v0, 1.0);
-    p[n++] = {true, 1.0 / c, 1.0 / D.v1, c, D.v1};
+  double a = lo;
+  for (int k = 0; k <= nc; ++k) {
+    const double b = k < nc ? std::min(cuts[k], hi) : hi;
+    if (a < b) {
+      // |v| >= 1 throughout (the cuts include +-1): the w = 1/v chart.
+      const bool rec = a >= 1.0 || b <= -1.0;
+      if (rec)
+        p[n++] = {true, a == -HUGE_VAL ? -0.0 : 1.0 / a, b == HUGE_VAL ? 0.0 : 1.0 / b, a, b};
+      else
+        p[n++] = {false, a, b, a, b};
+    }
+    a = std::max(a, b);
   }
   return n;
 }
@@ -510,8 +539,8 @@ Status plan(const Surface& S, const ExportDomain& D, Data& X, Plan& L) {
     if (!(w != 0.0) || (i > 0 && (w > 0) != (prev > 0))) return Status::point_at_infinity;
     prev = w;
   }
-  VPiece init[3];
-  const int ni = initial_pieces(D, init);
+  VPiece init[5];
+  const int ni = initial_pieces(D, parameter_scale(X), init);
   L.nv = 0;
   for (int i = 0; i < ni; ++i)
     if (!split_v(X, init[i], 0, L.v, L.nv)) return Status::numerical_overflow;
