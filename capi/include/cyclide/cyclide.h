@@ -1021,7 +1021,9 @@ typedef struct cyc_blend_obstacle {
  *  - obstacles: every circle at the t nodes at least radius + clearance
  *    from each obstacle's center (closed-form point-circle distance; hinge).
  *  L is the size of the two end circles and their distance. Weights are
- *  >= 0; arrays may be NULL only with count 0. */
+ *  >= 0; counts 0..4096 (each target or obstacle adds residuals at every
+ *  node); arrays may be NULL only with count 0. Every field is checked by
+ *  name (objective.targets[1].point[2] ...). */
 typedef struct cyc_blend_objective {
   double fairness;        /* default 1 */
   double regularity;      /* default 1 */
@@ -1090,7 +1092,9 @@ CYC_API void cyc_optimize_options_init(cyc_optimize_options* options);
  *  the summary. objective / options NULL: the defaults. Statuses:
  *  CYC_E_INVALID_ARGUMENT (a bad weight, quadrature, bound, count or kind),
  *  CYC_E_NOT_FINITE, CYC_E_NULL_ARGUMENT, CYC_E_DEGREE_TOO_HIGH, and those of
- *  cyc_blend_canal / cyc_blend_ringed when no start blend is valid.
+ *  cyc_blend_canal / cyc_blend_ringed when no start blend is valid. Only
+ *  the phi[m - 2] with m <= K and the v[] of the kind (2 canal, 3 ringed)
+ *  are read and checked; in the chosen ends the others are 0.
  *  Optimizer tier: allocates; CYC_E_UNSUPPORTED without Ceres. Nothing is
  *  written on error. */
 CYC_API int cyc_optimize_blend(cyc_context* ctx, int kind, const cyc_blend_end* start,
@@ -1113,7 +1117,7 @@ typedef struct cyc_bump_objective {
   int obstacle_count;
   double clearance;       /* >= 0, default 0 */
   double obstacle_weight; /* default 1 */
-  int nodes;              /* 4..1024, default 64 */
+  int nodes;              /* 4..1024, default 64 (obstacle_count 0..4096) */
 } cyc_bump_objective;
 
 /** Bounds and solver options of cyc_optimize_pcurve_bump. */
@@ -1483,7 +1487,8 @@ CYC_API int cyc_sphere_skin_lambda(cyc_context* ctx, const cyc_sphere_skin* skin
 struct cyc_tessellation_options;
 struct cyc_tessellation_plan;
 /** Bytes of workspace cyc_sphere_skin_tessellate_plan needs when N may reach
- *  `segments` (0 if out of range): 452 doubles per segment. */
+ *  `segments`: 452 doubles per segment, 0 for segments outside
+ *  3..CYC_MAX_CIRCLE_SEGMENTS (never negative or wrapped). */
 CYC_API size_t cyc_sphere_skin_tessellation_workspace_size(int segments);
 /** Plans the mesh of patch `patch`: rows t = const (ts[0] = 0 < ... <
  *  ts[plan->rows - 1] = 1) of N points at equal steps in theta, theta =
@@ -1961,7 +1966,8 @@ typedef struct cyc_cyclide_blend_objective {
   double obstacle_weight;      /* >= 0, default 1 */
   double regularity;           /* >= 0, default 1 */
   double min_extent;           /* >= 0 (0: off), default 0.05 */
-  int circles;                 /* per family and piece, 4..256, default 16 */
+  int circles;                 /* per family and piece, 4..256, default 16
+                                  (joint_point_count, obstacle_count 0..4096) */
 } cyc_cyclide_blend_objective;
 
 /** The scan and solver options. */
@@ -2038,8 +2044,9 @@ typedef struct cyc_tessellation_plan {
 } cyc_tessellation_plan;
 
 CYC_API void cyc_tessellation_options_default(cyc_tessellation_options* options);
-/** Bytes of workspace cyc_tessellate_plan needs for this many arcs (0 if
- *  out of range). */
+/** Bytes of workspace cyc_tessellate_plan needs for this many arcs: 0 for
+ *  segments outside 3..CYC_MAX_CIRCLE_SEGMENTS (never negative or wrapped;
+ *  the planner refuses those counts naming the option). */
 CYC_API size_t cyc_tessellation_workspace_size(int segments);
 /** Chooses the arcs per circle (equal angles, from the largest radius) and
  *  the circles us[0..plan->rows) (u0 ... u1, halved adaptively until every
@@ -2110,7 +2117,11 @@ CYC_API int cyc_bezier_export_patch(cyc_context* ctx, const cyc_bezier_export* e
                                     cyc_bezier_patch_info* info, double* control,
                                     size_t control_cap);
 /** The patch index at local (s, t) in [0, 1]^2 (de Casteljau), and the
- *  surface parameters (u, v) of that point (uv may be NULL). */
+ *  surface parameters (u, v) of that point (uv may be NULL). Every output
+ *  is finite: where a reciprocal_v patch reaches v = +-infinity (the
+ *  generator) or 1/v underflows next to it, uv[1] is +-1e100, the largest
+ *  circle parameter cyc_surface_eval accepts (its point is the generator's
+ *  to a relative 1e-100). */
 CYC_API int cyc_bezier_export_eval(cyc_context* ctx, const cyc_bezier_export* e, int index,
                                    double s, double t, double x[3], double uv[2]);
 
