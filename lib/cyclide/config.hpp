@@ -27,6 +27,16 @@ constexpr double kDependentPlanesTol = 1e-10;
 // scale of the input, counts as zero.
 constexpr double kZeroTangentTol = 1e-12;
 
+// The circle parameter f(u, .) = (alpha v + beta) / (gamma v + delta) is
+// degenerate (nearly constant) where |alpha delta - beta gamma| <= this
+// times |alpha delta| + |beta gamma|: relative to the products it is the
+// difference of, so rescaling v or f (as similarities do) changes nothing.
+constexpr double kMobiusDegenerateTol = 1e-12;
+// ... and, with f normalized to max |coefficient| = 1, where |alpha delta -
+// beta gamma| <= this: a bound of the floating-point range, not of the
+// geometry (it keeps W^2 + G^2 |a|^2 >= ~1e-260, SPEC §3).
+constexpr double kMobiusDeterminantFloor = 1e-100;
+
 // Samples of the domain scanned at creation for degenerate parameters.
 constexpr int kDomainSamples = 257;
 

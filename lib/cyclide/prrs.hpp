@@ -50,14 +50,38 @@ Status check_prrs_planes(const ThreePlanes<S>& T) {
   return Status::ok;
 }
 
+// The planes (24)-(26) in the local variable Y = X - p1(u):
+//   M: n . Y = 0,  B1: 2 (p1 - p2) . Y = -|p1 - p2|^2,
+//   B2: 2 (p1 - p3) . Y = -|p1 - p3|^2,
+// the same normals as prrs_planes (the same relative determinant), with
+// right-hand sides of the model's size instead of the differences
+// |p1|^2 - |p_j|^2 that cancel to eps |p|^2 far from the origin (see
+// prcs_local_planes). The directrix is c = p1 + Y.
+template <int K, class S>
+ThreePlanes<Taylor<S, K>> prrs_local_planes(const Vec3<Taylor<S, K>>& q1,
+                                             const Vec3<Taylor<S, K>>& q2,
+                                             const Vec3<Taylor<S, K>>& q3) {
+  using T_ = Taylor<S, K>;
+  const Vec3<T_> e2 = q1 - q2, e3 = q1 - q3;
+  ThreePlanes<T_> T;
+  T.n[0] = e2.cross(e3);
+  T.n[1] = T_(S(2.0)) * e2;
+  T.n[2] = T_(S(2.0)) * e3;
+  T.b[0] = T_(S(0.0));
+  T.b[1] = -e2.dot(e2);
+  T.b[2] = -e3.dot(e3);
+  return T;
+}
+
 template <int N, class S>
 Status prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
                   const RationalCurve& p3, const S& u, CircleFrame<Taylor<S, N>>& F) {
-  const auto T = prrs_planes<N>(p1, p2, p3, u);
+  const auto P1 = p1.taylor<N>(u);
+  const auto T = prrs_local_planes<N, S>(P1, p2.taylor<N>(u), p3.taylor<N>(u));
   if (Status st = check_prrs_planes(T); st != Status::ok) return st;
-  F.o = intersect(T);  // directrix c(u)
-  F.a = T.n[0];        // n(u)
-  F.p = p1.taylor<N>(u);
+  F.o = P1 + intersect(T);  // directrix c(u), about the local origin p1(u)
+  F.a = T.n[0];             // n(u)
+  F.p = P1;
   return Status::ok;
 }
 

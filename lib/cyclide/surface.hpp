@@ -211,9 +211,18 @@ Status Surface::check_frame(const CircleFrame<Taylor<double, N>>& F) {
   if (!ok(F.alpha) || !ok(F.beta) || !ok(F.gamma) || !ok(F.delta))
     return Status::numerical_overflow;
   // f(u,.) must be a Mobius map: alpha delta - beta gamma relative to the
-  // largest coefficient squared (the frame is normalized to max = 1).
+  // products it is the difference of (kMobiusDegenerateTol), a measure that does not
+  // change when v or f is rescaled (alpha, delta stay, beta gamma stays):
+  // a similarity rescales the circle parameter by s (PRCS) or s^2 (PRRS),
+  // and a blend's f conjugated by diag(s^2, 1) had |alpha delta - beta
+  // gamma| ~ s^4 relative to the largest coefficient squared. The floor
+  // kMobiusDeterminantFloor (the frame is normalized to max = 1) keeps
+  // W^2 + G^2 |a|^2 inside the floating-point range (SPEC §3).
   const double al = F.alpha.c[0], be = F.beta.c[0], ga = F.gamma.c[0], de = F.delta.c[0];
-  if (!(std::abs(al * de - be * ga) > 1e-12)) return Status::degenerate_circle_parameter;
+  const double det = std::abs(al * de - be * ga);
+  if (!(det > kMobiusDegenerateTol * (std::abs(al * de) + std::abs(be * ga))) ||
+      !(det > kMobiusDeterminantFloor))
+    return Status::degenerate_circle_parameter;
   const Vec3d a(F.a[0].c[0], F.a[1].c[0], F.a[2].c[0]);
   const Vec3d d(F.p[0].c[0] - F.o[0].c[0], F.p[1].c[0] - F.o[1].c[0],
                 F.p[2].c[0] - F.o[2].c[0]);

@@ -214,6 +214,16 @@ Status end_mobius(const RationalCurve* p, const BlendEnd& e, double te,
   T w[3][2], v[3][2];
   for (int j = 0; j < 3; ++j) {
     circle_parameter<N>(F, p[j].taylor<N>(te), w[j]);
+    // [W : G] is homogeneous of degree up to 6 in the model's size (|a|^2
+    // rho^2 with a = (p1 - p2) x (p1 - p3)), and M_w^-1 M_v multiplies
+    // four such pairs: a blend scaled by 2^-30 underflowed to det = 0. One
+    // constant factor per pair (the same point, the same derivatives).
+    const double big = std::max(std::abs(w[j][0].c[0]), std::abs(w[j][1].c[0]));
+    if (big > 0 && std::isfinite(1.0 / big)) {
+      const T inv(1.0 / big);
+      w[j][0] *= inv;
+      w[j][1] *= inv;
+    }
     // v_j as the homogeneous constant (v, 1), or (1, 1/v) for |v| > 1
     // (v = +-infinity is the input's generator).
     const bool small = std::abs(e.v[j]) <= 1.0;

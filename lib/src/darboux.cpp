@@ -413,13 +413,32 @@ void monomials_along(const Line& L, double (&rows)[3][10]) {
 }  // namespace
 
 Status dcmc(const Line (&lines)[3], DcmcFamily& out) {
-  Line L[3];
   for (int i = 0; i < 3; ++i) {
     if (!input_ok(lines[i].P) || !input_ok(lines[i].d)) return Status::not_finite;
     if (!(lines[i].d.squaredNorm() > 0)) return Status::invalid_argument;
-    L[i].d = lines[i].d.normalized();
-    L[i].P = lines[i].P - lines[i].P.dot(L[i].d) * L[i].d;  // nearest to the origin
   }
+  // Steps 3-4 solve for the coefficients of phi2, monomials of degrees 0, 1
+  // and 2 in X: their columns scale like 1, |X|, |X|^2, so in the caller's
+  // coordinates the rank test below would depend on where the lines are and
+  // how large they are (a configuration 10^6 of its size away, or scaled by
+  // 2^30, has a 10^12-conditioned system and looked rank deficient). They
+  // are solved in the normalized coordinates Y = (X - O) / lambda of the
+  // lines' own frame (O the mean of the given points, which lie on the
+  // lines where the caller's model is -- their feet from the coordinate
+  // origin would be |X| apart along the lines; lambda the largest distance
+  // of the lines from O), and the family is carried back exactly:
+  // F(X) = lambda^3 F_Y((X - O) / lambda).
+  const Vec3d O = (lines[0].P + lines[1].P + lines[2].P) / 3.0;
+  Line L[3];
+  double lambda = 0;
+  for (int i = 0; i < 3; ++i) {
+    L[i].d = lines[i].d.normalized();
+    const Vec3d P = lines[i].P - O;
+    L[i].P = P - P.dot(L[i].d) * L[i].d;  // nearest to O
+    lambda = std::max(lambda, L[i].P.norm());
+  }
+  if (!(lambda > 0)) lambda = 1;  // three concurrent lines: no length of their own
+  for (Line& l : L) l.P /= lambda;
   // Mutually non-parallel, with a common normal n (step 2: phi1 = n . X).
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
@@ -458,10 +477,22 @@ Status dcmc(const Line (&lines)[3], DcmcFamily& out) {
     D.k[kLz] = l.z();
     for (int m = 0; m < 10; ++m) D.k[kQxx + m] = v[m];
   };
+  // Back to X: in lambda^3 F_Y((X - O) / lambda) the cubic (n.Z)|Z|^2 keeps
+  // its coefficients, phi2's quadratic, linear and constant ones take
+  // lambda, lambda^2, lambda^3 (the quadric, defined up to a factor, is
+  // multiplied by lambda^2 instead: 1, lambda, lambda^2); then Z = X - O.
+  Eigen::Matrix<double, 10, 1> xs = x, hs = h;
+  for (int m = 0; m < 10; ++m) {
+    const double e = m < 6 ? 1.0 : m < 9 ? lambda : lambda * lambda;
+    xs[m] *= lambda * e;
+    hs[m] *= e;
+  }
   DcmcFamily F;
   F.n = n;
-  fill(F.base, x, n);
-  fill(F.quadric, h, Vec3d::Zero());
+  fill(F.base, xs, n);
+  fill(F.quadric, hs, Vec3d::Zero());
+  F.base = translate(F.base, -O);
+  F.quadric = translate(F.quadric, -O);
   for (double v : F.base.k)
     if (!std::isfinite(v)) return Status::numerical_overflow;
   out = F;

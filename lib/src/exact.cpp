@@ -82,6 +82,27 @@ Hom homogeneous(Algebra& A, const RationalCurve& c) {
   return {A.vec(A.lift(c, c.x), A.lift(c, c.y), A.lift(c, c.z)), A.lift(c, c.w)};
 }
 
+// The curve seen from the local origin O: (P - O w) / w = p - O.
+Hom homogeneous(Algebra& A, const RationalCurve& c, const Vec3d& O) {
+  Hom h = homogeneous(A, c);
+  for (int j = 0; j < 3; ++j) h.P.c[j] = h.P.c[j] - h.w.scaled(O[j]);
+  return h;
+}
+
+// The local origin of a frame: the first curve's point at the middle of
+// the domain (t = 0). The planes' right-hand sides are products of two
+// positions; formed about O they are of the size of the model, where about
+// the coordinate origin a model moved far away would cancel eps |O|^2 (see
+// prcs_local_planes). Points come back as N / D + O = (N + O D) / D.
+Vec3d local_origin(const RationalCurve& c, double mid) {
+  const Vec3d O = c.point(mid);
+  return std::isfinite(O.squaredNorm()) ? O : Vec3d::Zero();  // a pole at mid: no shift
+}
+
+Algebra::V add_origin(const Algebra::V& N, const ExactPoly& D, const Vec3d& O) {
+  return {{N.c[0] + D.scaled(O[0]), N.c[1] + D.scaled(O[1]), N.c[2] + D.scaled(O[2])}};
+}
+
 // |P1/w1 - N/D|^2 as num/den: |P1 D - N w1|^2 / (w1 D)^2.
 void squared_distance(Algebra& A, const Hom& p, const Algebra::V& N, const ExactPoly& D,
                       ExactPoly& num, ExactPoly& den) {
@@ -114,7 +135,8 @@ Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactF
   Algebra A;
   A.mid = mid;
   A.half = half;
-  const Hom h1 = homogeneous(A, p1), h2 = homogeneous(A, p2);
+  const Vec3d O = local_origin(p1, mid);
+  const Hom h1 = homogeneous(A, p1, O), h2 = homogeneous(A, p2, O);
   Algebra::V n[3];
   ExactPoly b[3];
   normal_plane_row(A, p1, h1, n[0], b[0]);
@@ -133,9 +155,9 @@ Status exact_prcs_frame(const RationalCurve& p1, const RationalCurve& p2, ExactF
   const Algebra::V Ns = A.sub(A.scale(D, A.derivative(N)), A.scale(D.derivative(), N));
   const ExactPoly D2 = A.mul(D, D).scaled(half);
   ExactFrame F;
-  F.o = to_exact(N, D);
+  F.o = to_exact(add_origin(N, D, O), D);
   F.a = to_exact(Ns, D2);
-  F.p = to_exact(h1.P, h1.w);
+  F.p = to_exact(add_origin(h1.P, h1.w, O), h1.w);
   squared_distance(A, h1, N, D, F.r2_num, F.r2_den);
   if (A.overflow) return Status::degree_too_high;
   if (F.o.w.is_zero()) return Status::dependent_planes;
@@ -148,7 +170,8 @@ Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
   Algebra A;
   A.mid = mid;
   A.half = half;
-  const Hom h1 = homogeneous(A, p1), h2 = homogeneous(A, p2), h3 = homogeneous(A, p3);
+  const Vec3d O = local_origin(p1, mid);  // about O, as in exact_prcs_frame
+  const Hom h1 = homogeneous(A, p1, O), h2 = homogeneous(A, p2, O), h3 = homogeneous(A, p3, O);
   // e_j = p1 - p_j = (P1 w_j - P_j w1) / (w1 w_j); n = e2 x e3 up to the
   // factor w1^2 w2 w3, which does not change the planes.
   const Algebra::V e2 = A.sub(A.scale(h2.w, h1.P), A.scale(h1.w, h2.P));
@@ -172,10 +195,10 @@ Status exact_prrs_frame(const RationalCurve& p1, const RationalCurve& p2,
   ExactPoly D;
   A.cramer(n, b, N, D);
   ExactFrame F;
-  F.o = to_exact(N, D);
+  F.o = to_exact(add_origin(N, D, O), D);
   // n(u) = (p1 - p2) x (p1 - p3) = nn / (w1^2 w2 w3).
   F.a = to_exact(nn, A.mul(A.mul(h1.w, h1.w), A.mul(h2.w, h3.w)));
-  F.p = to_exact(h1.P, h1.w);
+  F.p = to_exact(add_origin(h1.P, h1.w, O), h1.w);
   squared_distance(A, h1, N, D, F.r2_num, F.r2_den);
   if (A.overflow) return Status::degree_too_high;
   if (F.o.w.is_zero()) return Status::collinear_points;

@@ -177,6 +177,21 @@ bool root(Complex p, Complex& r) {
 
 bool finite(Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
 
+// The square roots r0 = sqrt(p0), r1 = sqrt(p1) of the end data, with the
+// relative sign of r1 fixed by the data alone: r1 conj(r0) in the right
+// half-plane (the P-curve w turns from r0 to r1 by less than a right angle,
+// so p = w^2 by less than half a turn; ties on the imaginary axis to the
+// upper half). Principal roots in the frame of the plane would make that
+// sign depend on where the frame's e1 points: the same jets rotated about
+// v crossed the branch cut at one end only and got the other interpolant
+// (sign flipped). The overall sign of w does not matter (p = w^2).
+bool roots(Complex p0, Complex p1, Complex& r0, Complex& r1) {
+  if (!root(p0, r0) || !root(p1, r1)) return false;
+  const Complex z = r1 * std::conj(r0);
+  if (z.real() < 0 || (z.real() == 0 && z.imag() < 0)) r1 = -r1;
+  return true;
+}
+
 Status check_data(Complex p0, Complex v0, Complex p1, Complex v1, int sign) {
   for (Complex z : {p0, v0, p1, v1})
     if (!finite(z) || !(std::abs(z.real()) <= kMaxInputMagnitude) ||
@@ -199,7 +214,7 @@ Status planar_pcurve_hermite(Complex p0, Complex v0, Complex p1, Complex v1, int
                              PlanarPCurve& out) {
   if (Status st = check_data(p0, v0, p1, v1, sign); st != Status::ok) return st;
   Complex r0, r1;
-  if (!root(p0, r0) || !root(p1, r1)) return Status::not_pythagorean;
+  if (!roots(p0, p1, r0, r1)) return Status::not_pythagorean;
   const double s = sign;
   PlanarPCurve P;
   P.n = 3;
@@ -220,7 +235,7 @@ Status planar_pbiarc(Complex p0, Complex v0, Complex p1, Complex v1, double tau,
   if (!std::isfinite(tau)) return Status::not_finite;
   if (!(tau > 0 && tau < 1)) return Status::bad_domain;
   Complex r0, r1;
-  if (!root(p0, r0) || !root(p1, r1)) return Status::not_pythagorean;
+  if (!roots(p0, p1, r0, r1)) return Status::not_pythagorean;
   const double s = sign;
   Complex w[6];
   w[0] = r0;

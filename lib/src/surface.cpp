@@ -404,15 +404,23 @@ void compile_frames(Surface& S) {
           m[j] = (*mine[i])[j].c[order];
           r[j] = (*ref[i])[j].c[order];
         }
-        // Relative to the quantity's own size (for o, p: to the frame's
-        // size |o| + |p - o|, since positions are translation-dependent).
-        double size = r.norm();
-        if (i != 1 && order == 0)
-          size += Vec3d(R.p[0].c[0] - R.o[0].c[0], R.p[1].c[0] - R.o[1].c[0],
-                        R.p[2].c[0] - R.o[2].c[0])
-                      .norm();
+        // Relative to the quantity's own size; positions (o, p) relative
+        // to the circle's size |p - o| (at most |o| of it: near the origin
+        // the old measure |o| + |p - o|), plus the rounding 16 eps |o| of
+        // representing a position at all. A frame far from the origin is
+        // then judged by its geometry, not by its distance from the origin
+        // (kCompiledTol |o| would accept errors of 10^-6 of the circle at
+        // 10^6 circles away).
+        double size = r.norm(), floor = 0;
         const double tol = (order == 0 ? 1.0 : 100.0) * kCompiledTol;
-        if (!((m - r).norm() <= tol * size)) return;
+        if (i != 1 && order == 0) {
+          const double rad = Vec3d(R.p[0].c[0] - R.o[0].c[0], R.p[1].c[0] - R.o[1].c[0],
+                                   R.p[2].c[0] - R.o[2].c[0])
+                                 .norm();
+          size = rad + std::min(size, rad);
+          floor = 16 * DBL_EPSILON * r.norm();
+        }
+        if (!((m - r).norm() <= tol * size + floor)) return;
       }
   }
   S.compiled = C;
