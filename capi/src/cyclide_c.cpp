@@ -102,6 +102,16 @@ Outcome capi::circle_parameter_of(const char* fn, const cyc_mobius* f, Mobius& m
 
 namespace {
 
+// The output buffers of a batch or grid of count points (data NULL: not
+// wanted): stride, capacity and span (check_buffer).
+Outcome check_outputs(const char* fn, const cyc_buffer3& points, const cyc_buffer3& du,
+                      const cyc_buffer3& dv, const cyc_buffer3& normals, size_t count) {
+  for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
+                         {"du", &du}, {"dv", &dv}, {"normals", &normals}})
+    TRY(check_buffer(fn, name, *b, count));
+  return ok();
+}
+
 // The domain [u0, u1] of a creator.
 Outcome check_domain(const char* fn, double u0, double u1) {
   TRY(check_double(fn, "u0", u0));
@@ -290,6 +300,7 @@ Outcome pack_rows(const char* fn, const char* name, int degree, const double* ro
     return fail(CYC_E_INVALID_ARGUMENT, "%s: stride = %zu is below %d doubles per row", fn,
                 stride, width);
   TRY(check_range(fn, "degree", degree, 0, CYC_MAX_CURVE_DEGREE, CYC_E_DEGREE_TOO_HIGH));
+  TRY(check_span(fn, name, size_t(degree) + 1, stride, size_t(width)));
   TRY(check_rows(fn, name, rows, size_t(degree) + 1, stride, size_t(width)));
   for (int k = 0; k <= degree; ++k)
     for (int j = 0; j < width; ++j) packed[width * k + j] = rows[k * stride + j];
@@ -632,9 +643,8 @@ int cyc_surface_eval_batch(cyc_context* ctx, const cyc_surface* surface, const d
     if (count) REQUIRE(uv);
     if (uv_stride < 2)
       return fail(CYC_E_INVALID_ARGUMENT, "%s: uv_stride = %zu is below 2", fn, uv_stride);
-    for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
-                           {"du", &du}, {"dv", &dv}, {"normals", &normals}})
-      if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
+    TRY(check_span(fn, "uv", count, uv_stride, 2));
+    TRY(check_outputs(fn, points, du, dv, normals, count));
     const Status s = surface->surface.eval_batch(uv, uv_stride, count, strided(points),
                                                  strided(du), strided(dv),
                                                  strided(normals), singular);
@@ -656,9 +666,7 @@ int cyc_surface_eval_grid(cyc_context* ctx, const cyc_surface* surface, const do
     if (!size_product(nu, nv, count))
       return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
                   nu, nv);
-    for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
-                           {"du", &du}, {"dv", &dv}, {"normals", &normals}})
-      if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
+    TRY(check_outputs(fn, points, du, dv, normals, count));
     const Status s = surface->surface.eval_grid(us, nu, vs, nv, strided(points),
                                                 strided(du), strided(dv),
                                                 strided(normals), singular);
@@ -1081,9 +1089,7 @@ int cyc_surface_eval_grid_inverted(cyc_context* ctx, const cyc_surface* surface,
     if (!size_product(nu, nv, count))
       return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
                   nu, nv);
-    for (auto [name, b] : {std::pair<const char*, const cyc_buffer3*>{"points", &points},
-                           {"du", &du}, {"dv", &dv}, {"normals", &normals}})
-      if (Outcome o = check_buffer(fn, name, *b, count); o.status) return o;
+    TRY(check_outputs(fn, points, du, dv, normals, count));
     Inversion I;
     TRY(read_inversion(fn, *inv, I));
     const Status s = eval_grid_inverted(surface->surface, I, us, nu, vs, nv, strided(points),

@@ -414,6 +414,62 @@ TEST(CanalCapiCounts, GridSizeProductDoesNotWrap) {
   }
 }
 
+// Strides whose rows would wrap the address space (row k at k * stride
+// beyond SIZE_MAX bytes) are refused before any row is read or written: a
+// wrapped k * stride addresses memory outside the caller's array.
+TEST(CanalCapiCounts, StridesThatWrapAreRefused) {
+  Env e;
+  const double c[8] = {0, 0, 0, 1, 0, 0, 0, 1};
+  const double uv[4] = {0, 0, 0.5, 1};
+  const double us[2] = {0, 0.5}, vs[2] = {0, 1};
+  const cyc_buffer3 none{nullptr, 0, 0};
+  for (size_t stride : {SIZE_MAX, SIZE_MAX / 2 + 1, SIZE_MAX / 8}) {
+    struct Case {
+      const char* expect;
+      std::function<int()> call;
+    };
+    const Case cases[] = {
+        {"cyc_curve_create_polynomial: coeffs:",
+         [&] { return cyc_curve_create_polynomial(e.ctx, 1, c, stride, e.o<cyc_curve*>()); }},
+        {"cyc_curve_create_rational: coeffs:",
+         [&] { return cyc_curve_create_rational(e.ctx, 1, c, stride, e.o<cyc_curve*>()); }},
+        {"cyc_curve_create_bezier: ctrl:",
+         [&] {
+           return cyc_curve_create_bezier(e.ctx, 1, c, stride, nullptr, 0, 1, e.o<cyc_curve*>());
+         }},
+        {"cyc_surface_eval_batch: uv:",
+         [&] {
+           return cyc_surface_eval_batch(e.ctx, e.S, uv, stride, 2, e.buffer(0), none, none,
+                                         none, e.o<size_t>(2048));
+         }},
+        {"cyc_surface_eval_batch: points:",
+         [&] {
+           const cyc_buffer3 P{e.o<double>(), 8, stride};
+           return cyc_surface_eval_batch(e.ctx, e.S, uv, 2, 2, P, none, none, none,
+                                         e.o<size_t>(2048));
+         }},
+        {"cyc_surface_eval_grid: normals:",
+         [&] {
+           const cyc_buffer3 N{e.o<double>(), 8, stride};
+           return cyc_surface_eval_grid(e.ctx, e.S, us, 2, vs, 2, none, none, none, N,
+                                        e.o<size_t>(2048));
+         }},
+        {"cyc_surface_eval_grid_inverted: du:",
+         [&] {
+           const cyc_buffer3 D{e.o<double>(), 8, stride};
+           return cyc_surface_eval_grid_inverted(e.ctx, e.S, &e.inv, us, 2, vs, 2, none, D,
+                                                 none, none, e.o<size_t>(2048));
+         }},
+    };
+    for (const Case& k : cases) {
+      e.seal();
+      EXPECT_EQ(k.call(), CYC_E_INVALID_ARGUMENT) << k.expect << " stride " << stride;
+      EXPECT_EQ(last_error(e).rfind(k.expect, 0), 0u) << last_error(e);
+      EXPECT_TRUE(e.untouched()) << k.expect;
+    }
+  }
+}
+
 // ------------------------------------------------------------ doubles
 
 enum Kind {
