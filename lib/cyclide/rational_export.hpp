@@ -34,6 +34,12 @@
 //        (Example 2 gives (5, 2); its closed form (23) has (3, 2)).
 //   (E5) v-pieces: Bernstein of degree 2 on [v0, v1]; |v| > 1 is written in
 //        w = 1/v (the evaluator's convention): X_h w^2 = X2 + X1 w + X0 w^2.
+//        The initial cuts are v = +-1 and, when the circle parameter's own
+//        scale c (the geometric mean over the samples of |B| / |A|, q(v) =
+//        A v + B the half-angle vector below; |a| for f = v) is far from 1
+//        (|log2 c| > 3), also v = +-c: a model scaled by s has PRCS's v ->
+//        s v, and without the cut at c the arc bisection would need about
+//        |log2 s| levels.
 //        Each piece is an arc of less than 120 degrees of every circle
 //        (checked at 65 values of u), so its middle weight
 //        <q(v0), q(v1)> = |q0||q1| cos(arc/2) is positive.
@@ -83,7 +89,7 @@
 // m = 0, one circle for every u, is written as degree 1), deg_v = 2;
 // dupin and parabolic: deg_u = 2 (E7)/(E8).
 // Patches: the v-pieces (at least one per part of [v0, v1] split at v = -1
-// and 1; a whole circle has at least 4) times the u-intervals (at least 1),
+// and 1, and at +-c (E5); a whole circle has at least 4) times the u-intervals (at least 1),
 // in u-major order (all v-pieces of the first u-interval, then the next);
 // a u-interval is bisected at most kMaxExportDepth times, a v-piece as well.
 // Accuracy: exact up to rounding. The exact frames are power forms (in t on
