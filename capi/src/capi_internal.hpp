@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -361,6 +363,22 @@ inline bool size_product(size_t a, size_t b, size_t& out) {
   return !__builtin_mul_overflow(a, b, &out);
 }
 
+// count rows of width doubles at a row stride of `stride` doubles: the
+// array spans (count - 1) stride + width doubles, which must be
+// addressable (at most PTRDIFF_MAX bytes), so that no index or pointer
+// computed from the stride can overflow.
+inline Outcome check_span(const char* fn, const char* name, size_t count, size_t stride,
+                          size_t width) {
+  if (count == 0) return ok();
+  constexpr size_t kMaxDoubles = size_t(PTRDIFF_MAX) / sizeof(double);
+  size_t last = 0;
+  if (!size_product(count - 1, stride, last) || last > kMaxDoubles - width)
+    return fail(CYC_E_INVALID_ARGUMENT,
+                "%s: %s: %zu rows at a stride of %zu doubles exceed the address space", fn,
+                name, count, stride);
+  return ok();
+}
+
 inline Vec3d vec(const double* p) { return Vec3d(p[0], p[1], p[2]); }
 
 inline void put3(double* dst, const Vec3d& v) {
@@ -452,11 +470,12 @@ inline Outcome emit_pieces(const char* fn, cyc_context* ctx, const Surface* S, i
 // A caller buffer for n vectors, or a reason why not.
 inline Outcome check_buffer(const char* fn, const char* name, const cyc_buffer3& b, size_t n) {
   if (!b.data) return ok();
-  if (b.stride < 3) return fail(CYC_E_INVALID_ARGUMENT, "%s: %s.stride < 3", fn, name);
+  if (b.stride < 3)
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: %s.stride = %zu is below 3", fn, name, b.stride);
   if (b.capacity < n)
     return fail(CYC_E_BUFFER_TOO_SMALL, "%s: %s holds %zu vectors, %zu needed", fn, name,
                 b.capacity, n);
-  return ok();
+  return check_span(fn, name, n, b.stride, 3);
 }
 
 inline Strided3 strided(const cyc_buffer3& b) {
