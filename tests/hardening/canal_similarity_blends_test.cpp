@@ -29,7 +29,7 @@ constexpr double kMaxTurn = 20;
 // where it is not well conditioned (above).
 Extent blend_extent(Scene& A, cyc_surface* S, double t0, double t1, bool* ok = nullptr) {
   Extent E;
-  double turn = 0, rate = 0;
+  double turn = 0, rate = 0, speed = 0;
   Vector3d prev = Vector3d::Zero();
   for (int k = 0; k <= 16; ++k) {
     const double u = t0 + (t1 - t0) * k / 16.0;
@@ -42,8 +42,16 @@ Extent blend_extent(Scene& A, cyc_surface* S, double t0, double t1, bool* ok = n
     double rr = 0;
     RC_ASSERT(cyc_surface_ringed_data(A.ctx, S, u, nullptr, nullptr, nullptr, &rr) == CYC_OK);
     rate = std::max(rate, std::abs(rr) * std::abs(t1 - t0));
+    // Near a stationary point of the spine (s' -> 0) the axis flips within
+    // a short interval and x_u is huge: the speed |x_u| bounds that.
+    for (const double v : {-1.0, 0.0, 1.0, 1e8}) {
+      double x[3], xu[3];
+      RC_ASSERT(cyc_surface_eval(A.ctx, S, u, v, x, xu, nullptr, nullptr) == CYC_OK);
+      speed = std::max(speed, v3(xu).norm() * std::abs(t1 - t0));
+    }
   }
-  if (ok) *ok = turn <= kMaxTurn && rate <= kMaxTurn * E.L * E.L;
+  if (ok)
+    *ok = turn <= kMaxTurn && rate <= kMaxTurn * E.L * E.L && speed <= kMaxTurn * E.L;
   return E;
 }
 
@@ -54,9 +62,34 @@ struct Pair {
   int curves = 2;
 };
 
-Pair gen_pair(bool canal) {
+// The two cones of seed 000 Fig. 6 (apex 0 and (4, 0, 4), axes z and -x;
+// PRRS of three rulings on [1/2, 1]), each apex moved by up to 1/4: the
+// canal blend of random lines is mostly ill-conditioned (its planes M, N
+// near dependent somewhere), the cones' blend is the paper's.
+Pair fig6_cones() {
   Pair P;
-  P.curves = canal ? 2 : 3;
+  P.curves = 3;
+  const Vector3d apex[2] = {gen_vec(2, 8), Vector3d(4, 0, 4) + gen_vec(2, 8)};
+  const Vector3d e[2][3] = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}, {-1, 0, 0}}};
+  for (int i = 0; i < 2; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double t = 2 * 3.14159265358979323846 * k / 3 + 0.3;
+      const Vector3d d = std::cos(t) * e[i][0] + std::sin(t) * e[i][1] + e[i][2];
+      CurveSpec& c = P.c[i][k];
+      c.degree = 1;
+      for (int j = 0; j < 3; ++j) {
+        c.h[j] = apex[i][j];
+        c.h[4 + j] = d[j];
+      }
+      c.h[3] = 1;
+    }
+  return P;
+}
+
+Pair gen_pair(bool canal) {
+  if (canal) return fig6_cones();
+  Pair P;
+  P.curves = 3;
   Vector3d off = gen_vec();
   if (off.norm() < 0.5) off = Vector3d(1, 1, 0);
   off = 4 * off.normalized();
@@ -69,12 +102,12 @@ Pair gen_pair(bool canal) {
   return P;
 }
 
-cyc_surface* build(Scene& A, const CurveSpec (&c)[3], int curves) {
+cyc_surface* build(Scene& A, const CurveSpec (&c)[3], int curves, double u0 = 0) {
   cyc_surface* S = nullptr;
   const int st = curves == 2
-                     ? cyc_prcs_create(A.ctx, A.curve(c[0]), A.curve(c[1]), nullptr, 0, 1, &S)
+                     ? cyc_prcs_create(A.ctx, A.curve(c[0]), A.curve(c[1]), nullptr, u0, 1, &S)
                      : cyc_prrs_create(A.ctx, A.curve(c[0]), A.curve(c[1]), A.curve(c[2]),
-                                       nullptr, 0, 1, &S);
+                                       nullptr, u0, 1, &S);
   return A.keep(st, S);
 }
 
@@ -83,13 +116,16 @@ cyc_surface* build(Scene& A, const CurveSpec (&c)[3], int curves) {
 void blend_property(bool canal, bool matched) {
   const Pair P = gen_pair(canal);
   Scene A;
-  cyc_surface* S[2] = {build(A, P.c[0], P.curves), build(A, P.c[1], P.curves)};
+  // Both cones end at u = 1 (their base circles) on [1/2, 1]; the random
+  // lines' surfaces run on [0, 1], the first ends at 1, the second starts.
+  const double u0 = canal ? 0.5 : 0.0;
+  cyc_surface* S[2] = {build(A, P.c[0], P.curves, u0), build(A, P.c[1], P.curves, u0)};
   RC_PRE(made(S[0]) && made(S[1]));
   // The ends' extent: their circles at the ends.
   Extent E0;
   for (int i = 0; i < 2; ++i) {
     cyc_circle c;
-    RC_ASSERT(cyc_surface_circle(A.ctx, S[i], i == 0 ? 1.0 : 0.0, &c) == CYC_OK);
+    RC_ASSERT(cyc_surface_circle(A.ctx, S[i], canal || i == 0 ? 1.0 : 0.0, &c) == CYC_OK);
     E0.add(v3(c.center));
     E0.radius(std::sqrt(c.radius2));
   }
@@ -98,9 +134,11 @@ void blend_property(bool canal, bool matched) {
   cyc_blend_end e[2] = {};
   for (int i = 0; i < 2; ++i) {
     e[i].surface = S[i];
-    e[i].u = i == 0 ? 1.0 : 0.0;
+    e[i].u = canal || i == 0 ? 1.0 : 0.0;
     for (int j = 0; j < 3; ++j) e[i].v[j] = std::tan(-1.2 + 1.1 * j + gen_int(-20, 20) / 100.0);
-    e[i].lambda = 1 + gen_int(0, 8) / 4.0;
+    // Cones: the blend leaves the first at its base and enters the second
+    // at its base, against its u (Fig. 6).
+    e[i].lambda = (1 + gen_int(0, 8) / 4.0) * (canal && i == 1 ? -1 : 1);
   }
   auto make = [&](Scene& X, const cyc_blend_end* ends, cyc_surface** out) {
     return canal ? cyc_blend_canal(X.ctx, &ends[0], &ends[1], K, 0, 1, out)
@@ -112,17 +150,18 @@ void blend_property(bool canal, bool matched) {
   A.keep(s0, B);
   RC_TAG(s0 == CYC_OK ? "built" : "refused");
   const Similarity g = *similarity::gen_similarity(E0.L);
-  const double kv = canal ? g.s : g.s * g.s;
+  // The ends are PRRS (v -> s^2 v); the canal blend is a PRCS (v -> s v).
+  const double kv_end = g.s * g.s, kv = canal ? g.s : g.s * g.s;
   Scene M;
   Pair Q = P;
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < P.curves; ++k) Q.c[i][k] = moved_points(P.c[i][k], g);
-  cyc_surface* T[2] = {build(M, Q.c[0], Q.curves), build(M, Q.c[1], Q.curves)};
+  cyc_surface* T[2] = {build(M, Q.c[0], Q.curves, u0), build(M, Q.c[1], Q.curves, u0)};
   RC_ASSERT(made(T[0]) && made(T[1]));
   cyc_blend_end f[2] = {e[0], e[1]};
   for (int i = 0; i < 2; ++i) {
     f[i].surface = T[i];
-    for (int j = 0; j < 3; ++j) f[i].v[j] = kv * e[i].v[j];
+    for (int j = 0; j < 3; ++j) f[i].v[j] = kv_end * e[i].v[j];
   }
   cyc_surface* C = nullptr;
   const int s1 = make(M, f, &C);
@@ -132,6 +171,19 @@ void blend_property(bool canal, bool matched) {
   bool conditioned = false;
   Extent E = blend_extent(A, B, 0, 1, &conditioned);
   RC_PRE(conditioned && E.min_radius >= 1e-2 * E.L && E.L <= 1e3 * E0.L);
+  if (canal) {
+    // The canal blend's planes M, N, B (PRCS of its Hermite curves) near
+    // dependent send the spine s away: touching spheres of radius r far
+    // beyond their circles' rho. Kept to r <= kMaxTurn rho (the PRCS
+    // property filters the planes' relative determinant directly).
+    for (int k = 0; k <= 16; ++k) {
+      cyc_sphere q;
+      cyc_circle c;
+      RC_ASSERT(cyc_surface_sphere(A.ctx, B, k / 16.0, &q) == CYC_OK);
+      RC_ASSERT(cyc_surface_circle(A.ctx, B, k / 16.0, &c) == CYC_OK);
+      RC_PRE(q.radius2 <= kMaxTurn * kMaxTurn * c.radius2);
+    }
+  }
   E.L = std::max(E.L, E0.L);
   // The blend is PRCS (canal) or PRRS (ringed) of Hermite curves of the
   // moved points and derivatives: the same v scaling as its ends. The
@@ -147,12 +199,12 @@ void blend_property(bool canal, bool matched) {
   // (gaps as lengths, angles and relative jumps as numbers).
   for (int i = 0; i < 2; ++i) {
     cyc_continuity r0, r1;
-    const double ua = 1.0, ub = 0.0;  // S0(1) -> B(0), B(1) -> S1(0)
+    const double ua = 1.0, ub = i == 1 && canal ? 1.0 : 0.0;  // S0(1) -> B(0), B(1) -> S1
     const cyc_surface* a0 = i == 0 ? S[0] : B;
     const cyc_surface* b0 = i == 0 ? B : S[1];
     const cyc_surface* a1 = i == 0 ? T[0] : C;
     const cyc_surface* b1 = i == 0 ? C : T[1];
-    const double lam = i == 0 ? e[0].lambda : 1.0 / e[1].lambda;  // du_a / du_b
+    const double lam = i == 0 ? e[0].lambda : 1.0 / e[1].lambda;  // du_a / du_b (signed)
     const int k0 = cyc_continuity_report(A.ctx, a0, ua, lam, b0, ub, 1, nullptr, 8, &r0);
     const int k1 = cyc_continuity_report(M.ctx, a1, ua, lam, b1, ub, 1, nullptr, 8, &r1);
     RC_ASSERT(k0 == k1);
@@ -225,6 +277,16 @@ RC_GTEST_PROP(CanalSimilarity, PcurveBlendMovesWithItsJets, ()) {
   Vector3d v = gen_vec(8, 4);
   if (v.norm() < 0.5) v = Vector3d(0, 0, 1);
   for (int j = 0; j < 3; ++j) o.v[j] = v[j];
+  // (43) and (47) pair the square roots of the end data p0, p1 (n projected
+  // on the plane of v) so that the P-curve turns by less than half a turn;
+  // where p1 is nearly opposite to p0 the two pairings tie and the
+  // rounding of the moved jets may pick either: a decision boundary of the
+  // construction, kept 10 degrees away.
+  {
+    const Vector3d vu = v.normalized(), na = v3(a.n), nb = v3(b.n);
+    const Vector3d pa = na - na.dot(vu) * vu, pb = nb - nb.dot(vu) * vu;
+    RC_PRE(pa.dot(pb) >= -std::cos(10.0 * 3.14159265358979323846 / 180) * pa.norm() * pb.norm());
+  }
   Scene A;
   cyc_surface* P[2] = {};
   int count = 0;
@@ -249,8 +311,9 @@ RC_GTEST_PROP(CanalSimilarity, PcurveBlendMovesWithItsJets, ()) {
   const int piece = gen_int(0, count - 1);
   double u0, u1;
   RC_ASSERT(cyc_surface_domain(A.ctx, P[piece], &u0, &u1) == CYC_OK);
-  Extent E = blend_extent(A, P[piece], u0, u1);
-  RC_PRE(E.min_radius >= 1e-2 * E.L && E.L <= 1e2 * L);
+  bool conditioned = false;
+  Extent E = blend_extent(A, P[piece], u0, u1, &conditioned);
+  RC_PRE(conditioned && E.min_radius >= 1e-2 * E.L && E.L <= 1e2 * L);
   E.L = std::max(E.L, L);
   // The moved jets' rounding passes through the Ferguson cubics and the
   // degree-6 P-curve (Bernstein to power form): up to kPcurveAmp.
