@@ -23,11 +23,18 @@ Status normalize_cone(const LieCone& in, LieCone& out) {
   if (!(std::abs(lie_dot(in.r0, in.r0)) <= kConeTol * n0 * n0))
     return Status::not_on_lie_quadric;
   // A plane as generating sphere (a planar tangent cone, Remark 4.2) has no
-  // circle centre to normalize by; not supported yet.
-  if (!(std::abs(dot_n_infinity(in.r0)) > 1e-12 * n0)) return Status::unsupported;
-  // The scale through the robust weight: r0_+ - r0_- cancels for spheres
-  // far from the origin and would scale the read-back centre by 1 + eps D^2.
+  // circle centre to normalize by; not supported yet. The weight through
+  // the robust form (r0_+ - r0_- cancels for spheres far from the origin
+  // and would scale the read-back centre by 1 + eps D^2), zero within its
+  // own rounding, as lie_sphere reads it (|t| <= 1e-12 |r0| read every
+  // sphere beyond ~1e6 from the origin as a plane).
   const double t = lie_sphere_weight(in.r0);
+  const double sum = std::abs(in.r0[kEPlus] + in.r0[kEMinus]);
+  const double t_rounding =
+      std::min(std::abs(in.r0[kEPlus]) + std::abs(in.r0[kEMinus]),
+               sum > 0 ? (in.r0.head<3>().squaredNorm() + in.r0[kER] * in.r0[kER]) / sum
+                       : HUGE_VAL);
+  if (!(std::abs(t) > 1e-12 * t_rounding)) return Status::unsupported;
   LieCone C;
   C.r0 = (-2.0 / t) * in.r0;
   // r+ . n_inf within the rounding of its terms is zero (cone_from_spheres
@@ -48,8 +55,10 @@ Status normalize_cone(const LieCone& in, LieCone& out) {
   const double rp_euclidean = C.r_plus.head<3>().squaredNorm() + C.r_plus[kER] * C.r_plus[kER];
   if (!(lie_dot(C.r_plus, C.r_plus) > kConeTol * rp_euclidean))
     return Status::invalid_argument;
-  if (!(std::abs(C.r0[kER]) > 1e-12 * C.r0.norm()))
-    return Status::invalid_argument;  // a point sphere: the circle is a point
+  // A point sphere (the circle is a point): rho = r0_r / 2 against the
+  // centre's own size |m| = |r0_123| / 2 (|r0| ~ |m|^2 mixed the unit in).
+  if (!(std::abs(C.r0[kER]) > 1e-12 * C.r0.head<3>().norm()))
+    return Status::invalid_argument;
   out = C;
   return Status::ok;
 }

@@ -1,6 +1,7 @@
 // Dupin cyclides from three oriented spheres (seed 003 §3; see dupin.hpp).
 #include "cyclide/dupin.hpp"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -12,16 +13,6 @@ namespace {
 bool parallel(const Lie6d& x, const Lie6d& y) {
   // Unit x, y: x = +-y up to rounding.
   return std::min((x - y).norm(), (x + y).norm()) <= 1e-12;
-}
-
-// The projection of x onto span of the J-orthonormal columns (i, j, k) of theta.
-Lie6d project(const Matrix6d& theta, const int (&cols)[3], const Lie6d& x) {
-  Lie6d p = Lie6d::Zero();
-  for (int c : cols) {
-    const Lie6d f = theta.col(c);
-    p += (lie_dot(x, f) / lie_dot(f, f)) * f;
-  }
-  return p;
 }
 
 constexpr int kColsA[3] = {kE1, kE2, kEMinus};
@@ -66,47 +57,160 @@ LieSphere translated(const LieSphere& s, const Vec3d& t) {
   return r;
 }
 
-// The local origin of a set of Lie spheres: the mean of the centres and
-// points (planes and the point at infinity have none; 0 if no input has
-// one). Summed as m / k: no overflow before the inputs themselves do.
-Vec3d centre_of(const LieSphere* s, int k) {
-  int count = 0;
-  for (int i = 0; i < k; ++i) count += has_centre(s[i]);
-  Vec3d o = Vec3d::Zero();
-  for (int i = 0; i < k; ++i)
-    if (has_centre(s[i])) o += s[i].m / double(count);
-  return o;
+// A similarity frame x' = (x - origin) / unit (unit a power of 2, so that
+// scaling by it is exact). Lie coordinates (4) mix lengths of the model
+// with the unit length (n0 has coefficient 1, n_inf has |m|^2 - rho^2):
+// a model of size L far from 1 or far from the origin has vectors whose
+// products cancel terms of size (L + D)^2 / unit^2 against 1 and lose
+// their digits. In a frame at the model with its own unit they do not.
+struct Frame {
+  Vec3d origin = Vec3d::Zero();
+  double unit = 1;
+};
+
+// The Lie sphere s in the frame F, at the geometric level: centres by
+// (m - o) / unit, radii by rho / unit, a plane x . n = lambda by
+// (lambda - n . o) / unit. No n_inf-type coordinate is formed.
+LieSphere in_frame(const LieSphere& s, const Frame& F) {
+  LieSphere r = translated(s, -F.origin);
+  if (has_centre(r)) {
+    r.m /= F.unit;
+    r.rho /= F.unit;
+  }
+  if (r.kind == LieSphereKind::plane) r.lambda /= F.unit;
+  return r;
 }
 
-// Moves k Lie vectors to a local origin, the mean centre of those that
-// decode as spheres or points. A vector that decodes as a Lie sphere is
-// moved at the geometric level (translated) and encoded again: the Lie
-// translation of a stored vector cancels terms of size D^2 and keeps
-// their rounding, so it restores no digits. A vector that does not decode
-// (a non-neutral vector of a spanning set) is moved by the Lie
-// translation, a Laguerre and Mobius map that keeps every product.
-// Writes local[0..k) and origin; origin is 0 (and local = a) when no input
-// has a centre. numerical_overflow if the origin or a moved vector
-// overflows.
-Status to_local_origin(const Lie6d* a, int k, Lie6d* local, Vec3d& origin) {
+// The Lie map of the frame change x -> (x - o) / unit (translation, then
+// scaling: a Laguerre and Mobius map), for vectors that are no Lie sphere.
+Matrix6d frame_map(const Frame& F) {
+  return lie_scaling(1 / F.unit).M * lie_translation(-F.origin).M;
+}
+
+// The nearest power of 2 to x > 0 (1 for 0 or non-finite x).
+double power_of_two(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return 1;
+  return std::ldexp(1.0, int(std::lround(std::log2(x))));
+}
+
+// How well the frame represents vectors x_i for the form: s_max / s_min
+// (over the first `rank` singular values) of the unit-normalized vectors.
+// Rounding of a span's basis, of its Gram eigenvalues and of products
+// grows with it (Wedin: the angle error of the span is eps s_max / s_min).
+double frame_condition(const Lie6d* x, int k, int rank) {
+  if (k == 0 || rank == 0) return 1;
+  Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> X(6, k);
+  for (int i = 0; i < k; ++i) {
+    const double big = x[i].cwiseAbs().maxCoeff();
+    if (!(big > 0) || !std::isfinite(big)) return HUGE_VAL;
+    X.col(i) = x[i] / big;
+    X.col(i).normalize();
+  }
+  const Eigen::JacobiSVD<decltype(X)> svd(X);
+  const auto& sv = svd.singularValues();
+  const int r = std::min<int>(rank, int(sv.size()));
+  return sv[r - 1] > 0 ? sv[0] / sv[r - 1] : HUGE_VAL;
+}
+
+// The rank of unit-normalized vectors at kLieRankTol (as lie_span).
+int vectors_rank(const Lie6d* x, int k) {
+  LieSubspace A;
+  return lie_span(x, k, A) == Status::ok ? A.dim : 0;
+}
+
+// The vectors of k inputs in frame F: the decoded ones (s[i] valid when
+// decoded[i]) re-encoded at the geometric level, the others by frame_map.
+Status encode_in_frame(const Lie6d* a, const LieSphere* s, const bool* decoded, int k,
+                       const Frame& F, Lie6d* out) {
+  const bool identity = F.origin.isZero(0) && F.unit == 1;
+  const Matrix6d M = identity ? Matrix6d::Identity() : frame_map(F);
+  for (int i = 0; i < k; ++i) {
+    if (identity) out[i] = a[i];
+    else if (!(decoded[i] && lie_vector(in_frame(s[i], F), out[i]) == Status::ok))
+      out[i] = M * a[i];
+    if (!out[i].allFinite()) return Status::numerical_overflow;
+  }
+  return Status::ok;
+}
+
+// The frame in which k Lie vectors (a[i], decoded as s[i] where decoded[i])
+// are best conditioned for the form (frame_condition): candidate origins
+// are the mean of the centres and each centre (none: 0), candidate units
+// the powers of 2 nearest to each sphere's size (|rho|, or its distance
+// from the origin for a point) and to the spread of the centres; the given
+// coordinates (origin 0, unit 1) compete too. A pair of small spheres with
+// one nearly a plane (radius 1500, its centre 1500 away) is well
+// conditioned about the small ones with unit 1, not at the mean of the
+// centres, where the Gram eigenvalue that decides the signature fell to
+// 3e-10; a torus of size 2^-20 needs the unit 2^-20.
+Frame best_frame(const Lie6d* a, const LieSphere* s, const bool* decoded, int k) {
+  Vec3d centres[6];
+  double sizes[6];
+  int count = 0;
+  for (int i = 0; i < k; ++i)
+    if (decoded[i] && has_centre(s[i])) centres[count] = s[i].m, sizes[count++] = std::abs(s[i].rho);
+  Frame best;  // the given coordinates
+  if (count == 0) return best;
+  Vec3d mean = Vec3d::Zero();
+  for (int i = 0; i < count; ++i) mean += centres[i] / double(count);
+  double spread = 0;
+  for (int i = 0; i < count; ++i) spread = std::max(spread, (centres[i] - mean).norm());
+  Vec3d origins[7];
+  int no = 0;
+  origins[no++] = mean;
+  for (int i = 0; i < count; ++i) origins[no++] = centres[i];
+  double units[8];
+  int nu = 0;
+  units[nu++] = power_of_two(spread);
+  for (int i = 0; i < count; ++i) {
+    const double size = sizes[i] > 0 ? sizes[i] : (centres[i] - mean).norm();
+    units[nu++] = power_of_two(size);
+  }
+  // The rank is that of the best frame: in a poor one, vectors of spheres
+  // far away in its unit are nearly parallel and lose rank to rounding.
+  Lie6d x[6];
+  int best_rank = vectors_rank(a, k);
+  double best_condition = frame_condition(a, k, best_rank);
+  for (int io = 0; io < no; ++io)
+    for (int iu = 0; iu < nu; ++iu) {
+      const Frame F{origins[io], units[iu]};
+      if (!F.origin.allFinite() || encode_in_frame(a, s, decoded, k, F, x) != Status::ok)
+        continue;
+      const int r = vectors_rank(x, k);
+      const double c = frame_condition(x, k, r);
+      if (r > best_rank || (r == best_rank && c < best_condition))
+        best_rank = r, best_condition = c, best = F;
+    }
+  return best;
+}
+
+// Moves k Lie vectors to their best frame (best_frame). A vector that
+// decodes as a Lie sphere is moved at the geometric level and encoded
+// again: the Lie translation of a stored vector cancels terms of size D^2
+// and keeps their rounding, so it restores no digits. A vector that does
+// not decode (a non-neutral vector of a spanning set) is moved by the Lie
+// map of the frame change, a Laguerre and Mobius map that keeps every
+// product. Writes local[0..k) and the frame; numerical_overflow if a moved
+// vector overflows.
+Status to_local_frame(const Lie6d* a, int k, Lie6d* local, Frame& frame) {
   LieSphere s[6];
   bool decoded[6] = {};
-  LieSphere centred[6];
-  int count = 0;
-  for (int i = 0; i < k; ++i) {
-    decoded[i] = lie_sphere(a[i], s[i]) == Status::ok;
-    if (decoded[i] && has_centre(s[i])) centred[count++] = s[i];
-  }
-  const Vec3d o = centre_of(centred, count);
-  if (!o.allFinite()) return Status::numerical_overflow;
-  const Matrix6d T = lie_translation(-o).M;
-  for (int i = 0; i < k; ++i) {
-    if (o.isZero(0) || !(decoded[i] && lie_vector(translated(s[i], -o), local[i]) == Status::ok))
-      local[i] = o.isZero(0) ? a[i] : Lie6d(T * a[i]);
-    if (!local[i].allFinite()) return Status::numerical_overflow;
-  }
-  origin = o;
+  for (int i = 0; i < k; ++i) decoded[i] = lie_sphere(a[i], s[i]) == Status::ok;
+  const Frame F = best_frame(a, s, decoded, k);
+  if (Status st = encode_in_frame(a, s, decoded, k, F, local); st != Status::ok) return st;
+  frame = F;
   return Status::ok;
+}
+
+// The stored cyclide of a build in frame F: theta (local to F) scaled back
+// by the unit (the Lie scaling, exact for a power of 2 up to the products'
+// rounding), origin = F.origin.
+void from_frame(const Frame& F, DupinCyclide& D) {
+  if (F.unit != 1) {
+    D.theta = lie_scaling(F.unit).M * D.theta;
+    D.type = dupin_laguerre_type(D);
+  }
+  D.origin = F.origin;
 }
 
 }  // namespace
@@ -121,14 +225,15 @@ Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature) {
     b[i] /= b[i].norm();
     if (!(std::abs(lie_dot(b[i], b[i])) <= kLieQuadricTol)) return Status::not_on_lie_quadric;
   }
-  // The products below are translation invariant, but for spheres at
-  // distance D they are ~1/D^4 of the normalized terms and drown in their
-  // rounding (a torus moved by 1e4 read as a pencil): form (4)/(7) again
-  // at the spheres' mean centre (to_local_origin).
+  // The products below are invariant under similarities, but for spheres
+  // at distance D they are ~1/D^4 of the normalized terms and drown in
+  // their rounding (a torus moved by 1e4 read as a pencil; one of size
+  // 2^-30 likewise): form (4)/(7) again in the triple's best frame
+  // (to_local_frame).
   {
     Lie6d moved[3];
-    Vec3d origin;
-    if (to_local_origin(a, 3, moved, origin) == Status::ok && !origin.isZero(0))
+    Frame frame;
+    if (to_local_frame(a, 3, moved, frame) == Status::ok)
       for (int i = 0; i < 3; ++i) {
         b[i] = moved[i] / moved[i].cwiseAbs().maxCoeff();
         b[i] /= b[i].norm();
@@ -215,18 +320,20 @@ Status dupin_from_spheres(const LieSphere (&s)[3], DupinCyclide& out) {
   Lie6d a[3];
   for (int i = 0; i < 3; ++i)  // the inputs' own statuses first
     if (Status st = lie_vector(s[i], a[i]); st != Status::ok) return st;
-  // The §3.1 case of the inputs as given (classify moves them to their
-  // centre itself), so that a failing build reports classify's status.
-  if (Status st = classify_sphere_triple(a); st != Status::ok) return st;
-  const Vec3d origin = centre_of(s, 3);
-  if (!origin.allFinite()) return Status::numerical_overflow;
-  // (4)/(7) of the inputs translated by -origin: |m - origin| is the
-  // inputs' spread, not their distance from 0.
+  // (4)/(7) of the inputs in their best frame (best_frame): |m - origin| /
+  // unit is the inputs' spread in their own size, not their distance from
+  // 0 in the unit length. The §3.1 case is read there too (classify would
+  // decode global vectors, whose weight is lost beyond |m| ~ 1e8).
+  const bool decoded[3] = {true, true, true};
+  const Frame F = best_frame(a, s, decoded, 3);
+  if (!F.origin.allFinite()) return Status::numerical_overflow;
   for (int i = 0; i < 3; ++i)
-    if (Status st = lie_vector(translated(s[i], -origin), a[i]); st != Status::ok) return st;
+    if (Status st = lie_vector(in_frame(s[i], F), a[i]); st != Status::ok) return st;
+  if (Status st = classify_sphere_triple(a); st != Status::ok) return st;
   DupinCyclide D;
   if (Status st = dupin_from_local_vectors(a, D); st != Status::ok) return st;
-  D.origin = origin;
+  from_frame(F, D);
+  if (!D.theta.allFinite()) return Status::numerical_overflow;
   out = D;
   return Status::ok;
 }
@@ -241,8 +348,8 @@ Status dupin_from_subspace(const Lie6d* span, int k, DupinCyclide& out, Signatur
   // the Lie translation (a Laguerre and Mobius map, so the span's signature
   // is unchanged).
   Lie6d local[6];
-  Vec3d origin;
-  if (Status st = to_local_origin(span, k, local, origin); st != Status::ok) return st;
+  Frame frame;
+  if (Status st = to_local_frame(span, k, local, frame); st != Status::ok) return st;
   LieSubspace A;
   if (Status st = lie_span(local, k, A); st != Status::ok) return st;
   if (sig) *sig = A.signature;
@@ -260,7 +367,12 @@ Status dupin_from_subspace(const Lie6d* span, int k, DupinCyclide& out, Signatur
   theta.col(kE3) = BP.col(0);
   theta.col(kEPlus) = BP.col(1);
   theta.col(kER) = BP.col(2);
-  return finish(theta, origin, out);
+  DupinCyclide D;
+  if (Status st = finish(theta, Vec3d::Zero(), D); st != Status::ok) return st;
+  from_frame(frame, D);
+  if (!D.theta.allFinite()) return Status::numerical_overflow;
+  out = D;
+  return Status::ok;
 }
 
 DupinCyclide swap_families(const DupinCyclide& D) {
@@ -270,18 +382,49 @@ DupinCyclide swap_families(const DupinCyclide& D) {
   return S;
 }
 
+namespace {
+// n_inf . f for a column f of theta, f . f = sigma (+1 or -1; theta is in
+// O(4,2)): x_+ - x_- directly, or, where the n_inf part a = (x_+ + x_-)/2
+// dominates (a cyclide of size L >~ 1e4 in the unit length, whose theta
+// carries the Lie scaling by L), b from f . f = |f_123|^2 + 4 a b - f_r^2.
+// The form with the smaller rounding is taken: |f_+| + |f_-| for the
+// direct one, (1 + |f_123|^2 + f_r^2) / |a| for the other.
+double column_weight(const Lie6d& f, double sigma) {
+  const double direct = dot_n_infinity(f);
+  const double a = 0.5 * (f[kEPlus] + f[kEMinus]);
+  const double norm_terms = 1 + f.head<3>().squaredNorm() + f[kER] * f[kER];
+  if (!(norm_terms < (std::abs(f[kEPlus]) + std::abs(f[kEMinus])) * std::abs(a))) return direct;
+  return (sigma - f.head<3>().squaredNorm() + f[kER] * f[kER]) / (2 * a);
+}
+}  // namespace
+
 DupinLaguerreType dupin_laguerre_type(const DupinCyclide& D) {
-  // n_inf = n_A + n_perp (projections); n_inf in A or A^perp is class I.
-  const Lie6d n = n_infinity();
-  const Lie6d nA = project(D.theta, kColsA, n);
-  const Lie6d nP = project(D.theta, kColsPerp, n);
-  const double tol = 1e-9 * n.norm();
-  if ((n - nA).norm() <= tol || (n - nP).norm() <= tol) return DupinLaguerreType::degenerate;
+  // n_inf = n_A + n_perp (projections). With the J-orthonormal columns
+  // f_c of theta (f_c . f_c = sigma_c), n_A = sum_{c in A} sigma_c
+  // (n_inf . f_c) f_c, so n_A^2 = sum_{c in A} sigma_c w_c^2 with w_c =
+  // n_inf . f_c: no product of the columns is formed, and every w_c scales
+  // alike under similarities (n_inf is fixed up to a factor by them), so
+  // the decisions below are relative.
+  double wA2 = 0, wP2 = 0, qA = 0;
+  for (int c : kColsA) {
+    const double sigma = c == kEMinus ? -1.0 : 1.0;
+    const double w = column_weight(D.theta.col(c), sigma);
+    wA2 += w * w;
+    qA += sigma * w * w;
+  }
+  for (int c : kColsPerp) {
+    const double sigma = c == kER ? -1.0 : 1.0;
+    const double w = column_weight(D.theta.col(c), sigma);
+    wP2 += w * w;
+  }
+  const double total = wA2 + wP2;
+  // n_inf in A (n_perp = 0) or in A^perp (n_A = 0): class I.
+  const double tol = 1e-9;
+  if (!(wP2 > tol * tol * total) || !(wA2 > tol * tol * total))
+    return DupinLaguerreType::degenerate;
   // D = A n N is degenerate (R^{1,1,0}) iff n_A is neutral; n_A^2 < 0 gives
   // D = R^2 (no plane in the family), > 0 gives R^{1,1} (two planes).
-  const double q = lie_dot(nA, nA);
-  const double scale = nA.squaredNorm() + nP.squaredNorm();
-  if (std::abs(q) <= 1e-9 * scale) return DupinLaguerreType::parabolic;
+  if (std::abs(qA) <= tol * total) return DupinLaguerreType::parabolic;
   return DupinLaguerreType::quartic;
 }
 
@@ -291,16 +434,76 @@ struct Pair {
   Lie6d a, b;  // a(xi), a_perp(zeta)
 };
 
-// c and n from the point and plane vectors (26)-(27), (32).
-Status point_and_normal(const Lie6d& H, const Lie6d& N, Vec3d& c, double& w, Vec3d& n,
-                        double& lambda, double& s) {
-  w = -dot_n_infinity(H);
-  if (!(std::abs(w) > kDupinInfinityTol * H.norm())) return Status::point_at_infinity;
+// x . n_inf of a neutral x (a member sphere, the point sphere c^): the
+// robust weight (lie_sphere_weight). For a cyclide of size L in the unit
+// length, x_+ and x_- are ~L^2 apart from their difference 2 (x . n_inf
+// of (4)), which x_+ - x_- loses for L >~ 1e4.
+double weight(const Lie6d& x) { return lie_sphere_weight(x); }
+
+// dx . n_inf for the derivative dx of a family of neutral vectors at x
+// (weight wx): x . dx = 0 gives, with x_+- = a +- b, x . y =
+// x_123 . y_123 + 2 (a_x b_y + b_x a_y) - x_r y_r and y . n_inf = 2 b_y,
+// b_dx = -(x_123 . dx_123 - x_r dx_r + b_x 2 a_dx) / (2 a_x); used when a_x
+// dominates (the direct dx_+ - dx_- cancels there).
+// The form with the smaller rounding is taken: |dx_+| + |dx_-| for the
+// direct one, (|x_123| |dx_123| + |x_r dx_r| + |b_x a_dx|) / |a_x| for the
+// other.
+double weight_derivative(const Lie6d& x, double wx, const Lie6d& dx) {
+  const double ax = 0.5 * (x[kEPlus] + x[kEMinus]);
+  const double adx = 0.5 * (dx[kEPlus] + dx[kEMinus]);
+  const double terms = x.head<3>().norm() * dx.head<3>().norm() + std::abs(x[kER] * dx[kER]) +
+                       std::abs(0.5 * wx * adx);
+  if (!(terms < (std::abs(dx[kEPlus]) + std::abs(dx[kEMinus])) * std::abs(ax)))
+    return dot_n_infinity(dx);
+  const double bdx =
+      -(x.head<3>().dot(dx.head<3>()) - x[kER] * dx[kER] + wx * adx) / (2 * ax);
+  return 2 * bdx;
+}
+
+// The tangent-plane vector (31) n^ = (n_inf . a) a_perp - (n_inf . a_perp) a
+// from the robust weights wa = n_inf . a, wb = n_inf . a_perp.
+Lie6d normal_vector(const Lie6d& a, double wa, const Lie6d& b, double wb) {
+  return wa * b - wb * a;
+}
+
+// The size of D's cyclide in the unit length, as theta carries it: a
+// build of size L (Lie scaling by L of a balanced theta) has n_inf parts a
+// ~ L and n0 parts b ~ 1/L in its columns, so L^2 ~ sum |a| / sum |b|
+// (b by column_weight). 1 for a theta without n0 parts.
+double theta_size(const Matrix6d& theta) {
+  double sa = 0, sb = 0;
+  for (int c = 0; c < 6; ++c) {
+    const Lie6d f = theta.col(c);
+    const double sigma = (c == kEMinus || c == kER) ? -1.0 : 1.0;
+    sa += std::abs(0.5 * (f[kEPlus] + f[kEMinus]));
+    sb += std::abs(0.5 * column_weight(f, sigma));
+  }
+  const double L = std::sqrt(sa / sb);
+  return std::isfinite(L) && L > 0 ? L : 1.0;
+}
+
+// Whether the point sphere H (weight w = -H . n_inf) is at infinity for a
+// cyclide of size L: |w| <= kDupinInfinityTol |H| after the Lie scaling by
+// 1 / L that makes the model of size 1 (x_+- = a +- b -> a / L +- b L), i.e.
+// the point lies beyond ~1e13 L (relative to the model, not the unit).
+bool at_infinity(const Lie6d& H, double w, double L) {
+  const double a = 0.5 * (H[kEPlus] + H[kEMinus]) / L, b = -0.5 * w * L;
+  const double size = std::sqrt(H.head<3>().squaredNorm() + H[kER] * H[kER] + 2 * (a * a + b * b));
+  return !(std::abs(w * L) > kDupinInfinityTol * size);
+}
+
+// c and n from the point and plane vectors (26)-(27), (32); w = -c^ . n_inf
+// by the robust weight, and the tangent plane's lambda = n . c (the plane
+// x . n = lambda through c: no n_inf-type coordinate of n^ is read).
+Status point_and_normal(const Lie6d& H, const Lie6d& N, double L, Vec3d& c, double& w,
+                        Vec3d& n, double& lambda, double& s) {
+  w = -weight(H);
+  if (at_infinity(H, w, L)) return Status::point_at_infinity;
   c = H.head<3>() / w;
   s = dot_e_r(N);
   if (!(std::abs(s) > kDupinInfinityTol * N.norm())) return Status::singular_point;
   n = N.head<3>() / s;
-  lambda = N[kEPlus] / s;
+  lambda = n.dot(c);
   // n is unit in exact arithmetic (n^ . n_inf = 0), but the terms of
   // |n|^2 - 1 = (n^_- - n^_+)(n^_- + n^_+) / s^2 cancel, so rounding leaves
   // up to ~1e-9 (fuzz_lie, regress-dupin-normal-unit). Dividing the plane
@@ -340,16 +543,22 @@ Status dupin_eval(const DupinCyclide& D, double xi, double zeta, double offset,
   // d/dxi of (29) and d/dzeta of (30): theta(2 e1 - 2 xi e2 + 2 xi e-), ...
   const Lie6d a1 = 2.0 * (D.theta.col(kE1) - xi * D.theta.col(kE2) + xi * D.theta.col(kEMinus));
   const Lie6d b1 = 2.0 * (D.theta.col(kE3) - zeta * D.theta.col(kEPlus) + zeta * D.theta.col(kER));
-  // Both vectors are bilinear in (a, b): the product rule is exact.
-  const Lie6d H = dupin_point_vector(a, b), N = dupin_normal_vector(a, b);
+  // Both vectors are bilinear in (a, b): the product rule is exact. The
+  // weights n_inf . a, n_inf . a_perp and their derivatives are read
+  // robustly (weight, weight_derivative).
+  const double wa = weight(a), wb = weight(b);
+  const double wa1 = weight_derivative(a, wa, a1), wb1 = weight_derivative(b, wb, b1);
+  const Lie6d H = dupin_point_vector(a, b), N = normal_vector(a, wa, b, wb);
   const Lie6d Hx = dupin_point_vector(a1, b), Hz = dupin_point_vector(a, b1);
-  const Lie6d Nx = dupin_normal_vector(a1, b), Nz = dupin_normal_vector(a, b1);
+  const Lie6d Nx = wa1 * b - wb * a1, Nz = wa * b1 - wb1 * a;
   Vec3d c, n;
   double w, lambda, s;
-  if (Status st = point_and_normal(H, N, c, w, n, lambda, s); st != Status::ok) return st;
+  if (Status st = point_and_normal(H, N, theta_size(D.theta), c, w, n, lambda, s);
+      st != Status::ok)
+    return st;
   // Quotient rule: (H_123 / w)' = (H'_123 - c w') / w, w = -H . n_inf.
   auto dpoint = [&](const Lie6d& Hd) {
-    return Vec3d((Hd.head<3>() + c * dot_n_infinity(Hd)) / w);
+    return Vec3d((Hd.head<3>() + c * weight_derivative(H, -w, Hd)) / w);
   };
   auto dnormal = [&](const Lie6d& Nd) { return Vec3d((Nd.head<3>() - n * dot_e_r(Nd)) / s); };
   const Vec3d dxi = dpoint(Hx) + offset * dnormal(Nx);
@@ -371,8 +580,9 @@ Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
   const Lie6d b = D.sphere_zeta(zeta.p0 / sz, zeta.p1 / sz);
   Vec3d c, n;
   double w, lambda, s;
-  if (Status st = point_and_normal(dupin_point_vector(a, b), dupin_normal_vector(a, b), c, w,
-                                   n, lambda, s);
+  if (Status st = point_and_normal(dupin_point_vector(a, b),
+                                   normal_vector(a, weight(a), b, weight(b)),
+                                   theta_size(D.theta), c, w, n, lambda, s);
       st != Status::ok)
     return st;
   return write_point(D.origin, c, n, lambda, offset, Vec3d::Zero(), Vec3d::Zero(), out);

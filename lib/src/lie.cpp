@@ -346,11 +346,22 @@ Status lie_sphere(const Lie6d& x, LieSphere& out) {
   const Lie6d pre = x / big;
   const Lie6d y = pre / pre.norm();
   if (!(std::abs(lie_dot(y, y)) <= kLieQuadricTol)) return Status::not_on_lie_quadric;
-  const double t = dot_n_infinity(y);
+  // The weight y . n_inf, read robustly (lie_sphere_weight), is zero for
+  // planes and the point at infinity; it counts as zero within its own
+  // rounding: that of |y_+| + |y_-| for y_+ - y_-, that of (|y_123|^2 +
+  // y_r^2) / |y_+ + y_-| for the neutral form. (|t| <= 1e-12 |y| read every
+  // sphere farther than ~1e6 from the origin as a plane: its weight is
+  // ~1/|m|^2 of |y|, but exact to a few eps.)
+  const double t = lie_sphere_weight(y);
   const double er = dot_e_r(y);
+  const double t_rounding =
+      std::min(std::abs(y[kEPlus]) + std::abs(y[kEMinus]),
+               std::abs(y[kEPlus] + y[kEMinus]) > 0
+                   ? (y.head<3>().squaredNorm() + y[kER] * y[kER]) / std::abs(y[kEPlus] + y[kEMinus])
+                   : HUGE_VAL);
   LieSphere s;
-  if (std::abs(t) > 1e-12) {  // (6): -2 y / (y . n_inf) = 2m + ... + 2 rho er
-    const Lie6d z = (-2.0 / lie_sphere_weight(y)) * y;
+  if (std::abs(t) > 1e-12 * t_rounding) {  // (6): -2 y / (y . n_inf) = 2m + ... + 2 rho er
+    const Lie6d z = (-2.0 / t) * y;
     s.m = 0.5 * z.head<3>();
     s.rho = 0.5 * z[kER];
     s.kind = std::abs(s.rho) <= 1e-12 * (1 + s.m.norm()) ? LieSphereKind::point
