@@ -14,6 +14,11 @@ static_assert(CYC_MAX_BLEND_ORDER == kMaxBlendOrder, "blend order bound");
 
 namespace {
 
+// The samples a continuity report takes along the common circle: a bound
+// that no sampling needs to exceed, so a count read from garbage cannot
+// start 2^31 evaluations.
+constexpr int kMaxContinuitySamples = 1 << 20;
+
 Outcome check_order(const char* fn, int K, int lo) {
   if (K < lo) return fail(CYC_E_INVALID_ARGUMENT, "%s: K = %d is below %d", fn, K, lo);
   if (K > kMaxBlendOrder)
@@ -264,7 +269,7 @@ int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua, dou
     REQUIRE(b);
     REQUIRE(out);
     TRY(check_order(fn, K, 0));
-    TRY(check_range(fn, "n", n, 1, INT_MAX));
+    TRY(check_range(fn, "n", n, 1, kMaxContinuitySamples));
     TRY(check_double(fn, "ua", ua));
     TRY(check_double(fn, "lambda", lambda));
     TRY(check_double(fn, "ub", ub));

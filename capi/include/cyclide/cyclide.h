@@ -962,8 +962,9 @@ typedef struct cyc_continuity {
   double circle_jump[CYC_MAX_BLEND_ORDER + 1];
 } cyc_continuity;
 
-/** va: n >= 1 circle parameters of a (NULL: n parameters spread over the
- *  whole circle). K in 0..CYC_MAX_BLEND_ORDER. CYC_E_NUMERICAL_OVERFLOW if
+/** va: n circle parameters of a, 1 <= n <= 1048576 (NULL: n parameters
+ *  spread over the whole circle); other n are CYC_E_INVALID_ARGUMENT. K in
+ *  0..CYC_MAX_BLEND_ORDER. CYC_E_NUMERICAL_OVERFLOW if
  *  lambda^l d^l x overflows. Allocation-free; *out is written only on
  *  success. */
 CYC_API int cyc_continuity_report(cyc_context* ctx, const cyc_surface* a, double ua,
