@@ -109,11 +109,21 @@ struct Planner {
 
   // The largest distance of the circle at fraction t from the chords A-B
   // (same angle index: the phases are linear in u, so the chords join
-  // corresponding points).
+  // corresponding points). Euclidean, so that a rotated model is planned
+  // alike (a per-coordinate maximum is up to sqrt(3) smaller along a
+  // diagonal).
   double deviation(const double* A, const double* B, const double* X, double t) const {
-    double dev = 0;
-    for (int i = 0; i < 3 * m; ++i) dev = std::max(dev, std::abs(X[i] - ((1 - t) * A[i] + t * B[i])));
-    return dev;
+    double dev2 = 0;
+    for (int j = 0; j < m; ++j) {
+      double d2 = 0;
+      for (int c = 0; c < 3; ++c) {
+        const int i = 3 * j + c;
+        const double d = X[i] - ((1 - t) * A[i] + t * B[i]);
+        d2 += d * d;
+      }
+      dev2 = std::max(dev2, d2);
+    }
+    return std::sqrt(dev2);
   }
 
   // Halve [ua, ub] while its circle at 1/4, 1/2 or 3/4 strays more than tol
