@@ -46,9 +46,14 @@ struct RationalBicubicPatch {
 // ------------------------------------------------------------- evaluators
 // De Casteljau on the homogeneous control points (weights may be <= 0; the
 // homogeneous point is what is interpolated). The affine point is x = X / w.
-// point_at_infinity when |w| <= 64 eps max_i |control_i|_inf (the weight
-// polynomial vanishes there: the point lies at infinity); not_finite for
-// NaN/Inf parameters. On error x is untouched.
+// point_at_infinity when |w| <= 64 eps W, W = the same de Casteljau sums
+// on the absolute weights |w_i| at the absolute parameters, which bounds
+// their rounding (the weight polynomial vanishes there to rounding: the
+// point lies at infinity). W is the weights' own scale: a bound taken from
+// all four homogeneous components would grow with the patch's distance from
+// the origin and, beyond about 1/(64 eps) = 7e13 of its size, refuse every
+// point of a valid patch. not_finite for NaN/Inf parameters. On error x is
+// untouched.
 
 // Homogeneous point of the cubic triangle at barycentrics (r, s, t).
 inline Eigen::Vector4d evaluate_homogeneous(const RationalCubicTriangle& T, double r, double s,
@@ -90,9 +95,12 @@ inline Eigen::Vector4d evaluate_homogeneous(const RationalBicubicPatch& P, doubl
 }
 
 namespace detail {
-inline Status dehomogenize(const Eigen::Vector4d& X, double scale, Eigen::Vector3d& x) noexcept {
+// X = (w, w x) with |w| judged against weight_scale, the rounding bound W
+// of its de Casteljau sums (see above).
+inline Status dehomogenize(const Eigen::Vector4d& X, double weight_scale,
+                           Eigen::Vector3d& x) noexcept {
   if (!X.allFinite()) return Status::numerical_overflow;
-  if (std::abs(X[0]) <= 64 * std::numeric_limits<double>::epsilon() * scale)
+  if (std::abs(X[0]) <= 64 * std::numeric_limits<double>::epsilon() * weight_scale)
     return Status::point_at_infinity;
   const Eigen::Vector3d p = X.tail<3>() / X[0];
   if (!p.allFinite()) return Status::numerical_overflow;
@@ -104,18 +112,28 @@ inline Status dehomogenize(const Eigen::Vector4d& X, double scale, Eigen::Vector
 inline Status evaluate(const RationalCubicTriangle& T, double r, double s, double t,
                        Eigen::Vector3d& x) noexcept {
   if (!std::isfinite(r) || !std::isfinite(s) || !std::isfinite(t)) return Status::not_finite;
-  double scale = 0;
-  for (const auto& c : T.control) scale = std::max(scale, c.cwiseAbs().maxCoeff());
-  return detail::dehomogenize(evaluate_homogeneous(T, r, s, t), scale, x);
+  RationalCubicTriangle W;  // the absolute weights, for the rounding bound
+  for (int i = 0; i < 10; ++i) W.control[i] = Eigen::Vector4d(std::abs(T.control[i][0]), 0, 0, 0);
+  const double bound = evaluate_homogeneous(W, std::abs(r), std::abs(s), std::abs(t))[0];
+  return detail::dehomogenize(evaluate_homogeneous(T, r, s, t), bound, x);
 }
 
 inline Status evaluate(const RationalBicubicPatch& P, double s, double t,
                        Eigen::Vector3d& x) noexcept {
   if (!std::isfinite(s) || !std::isfinite(t)) return Status::not_finite;
-  double scale = 0;
-  for (const auto& row : P.control)
-    for (const auto& c : row) scale = std::max(scale, c.cwiseAbs().maxCoeff());
-  return detail::dehomogenize(evaluate_homogeneous(P, s, t), scale, x);
+  // The rounding bound of the weight: de Casteljau on |w_ij| with the
+  // absolute factors |1 - x|, |x| of each step.
+  double col[4];
+  for (int i = 0; i < 4; ++i) {
+    double row[4];
+    for (int j = 0; j < 4; ++j) row[j] = std::abs(P.control[i][j][0]);
+    for (int n = 3; n > 0; --n)
+      for (int j = 0; j < n; ++j) row[j] = std::abs(1 - t) * row[j] + std::abs(t) * row[j + 1];
+    col[i] = row[0];
+  }
+  for (int n = 3; n > 0; --n)
+    for (int i = 0; i < n; ++i) col[i] = std::abs(1 - s) * col[i] + std::abs(s) * col[i + 1];
+  return detail::dehomogenize(evaluate_homogeneous(P, s, t), col[0], x);
 }
 
 }  // namespace v0

@@ -68,7 +68,8 @@ struct IsotropicParaboloid {
 Status normalize_plane(double e0, const Vec3d& e, OrientedPlane& out) noexcept;
 
 // Oriented contact of a cycle and a plane, to a tolerance relative to the
-// scale of the data: |e0 + e.m + r| <= tol * (1 + |e0| + |m| + |r|).
+// scale of the data: |e0 + e.m + r| <= tol * (|e0| + |m| + |r|) (no
+// absolute floor: the same verdict for the model scaled by any s).
 bool in_oriented_contact(const Cycle& z, const OrientedPlane& p, double tol = 1e-12) noexcept;
 
 // Point of contact m + r e of a cycle with a plane it touches.

@@ -26,8 +26,10 @@ Status normalize_plane(double e0, const Vec3d& e, OrientedPlane& out) noexcept {
 }
 
 bool in_oriented_contact(const Cycle& z, const OrientedPlane& p, double tol) noexcept {
+  // Relative to the terms' own size (no floor of one model unit, which
+  // would accept any plane near a cycle of size << 1); exact at zero.
   const double g = p.e0 + p.e.dot(z.m) + z.r;
-  return std::abs(g) <= tol * (1 + std::abs(p.e0) + z.m.norm() + std::abs(z.r));
+  return std::abs(g) <= tol * (std::abs(p.e0) + z.m.norm() + std::abs(z.r));
 }
 
 Status laguerre_to_isotropic(const OrientedPlane& p_in, IsotropicPoint& out) noexcept {
@@ -83,13 +85,15 @@ bool on_paraboloid(const IsotropicParaboloid& P, const IsotropicPoint& y, double
   if (y.exceptional) {
     // The paraboloid's "value at infinity": k = r + m3 must equal -c
     // (the plane (c, 0, 0, 1) touches (m, r) iff c + m3 + r = 0).
-    return std::abs(P.k + y.c) <= tol * (1 + std::abs(P.k) + std::abs(y.c));
+    return std::abs(P.k + y.c) <= tol * (std::abs(P.k) + std::abs(y.c));
   }
   const double q = y.y[0] * y.y[0] + y.y[1] * y.y[1];
   const double lin = 2 * (P.l1 * y.y[0] + P.l2 * y.y[1]);
   const double g = 2 * y.y[2] + P.k * q + lin + P.c0;
   const double scale = 2 * std::abs(y.y[2]) + std::abs(P.k) * q + std::abs(lin) + std::abs(P.c0);
-  return std::abs(g) <= tol * (1 + scale);
+  // Every term is a length (y1, y2 dimensionless): relative to their sum,
+  // the same for the model scaled by any s.
+  return std::abs(g) <= tol * scale;
 }
 
 IsotropicPoint isotropic_translate(const IsotropicPoint& y, const Vec3d& t) noexcept {
