@@ -432,8 +432,9 @@ RC_GTEST_PROP(CanalSimilarity, NwayBlendMovesWithItsEnds, ()) {
 // ------------------------------------------------------------ regressions
 
 // The P-curve blend of two jets and of the same jets turned by 170 degrees
-// about the projection direction v = z: p0 then crosses the branch cut of
-// the principal square root and p1 does not, so with principal roots the
+// about the projection direction v = z: p1 (at 24 degrees) then crosses the
+// branch cut of the principal square root and p0 (at -79) does not, so with
+// principal roots the
 // turned blend took the other interpolant of (43) (an O(1) different
 // surface); the roots are now paired by the data (r1 conj(r0) in the
 // right half-plane) and the turned blend is the turned surface.
