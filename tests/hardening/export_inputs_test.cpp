@@ -125,6 +125,43 @@ TEST_F(ExportInputs, WholeCircleEvalIsFiniteEverywhere) {
   cyc_bezier_export_destroy(ex);
 }
 
+// Regression (SkinSimilarity.CircleFamilyExportAndTessellationMove): the
+// exact export cut the circle only at v = +-1, and PRCS's v moves to s v,
+// so at 2^-20 almost the whole circle lay in |v| < 2^-20 and the arc
+// bisection ran out of depth (CYC_E_NUMERICAL_OVERFLOW). With the cuts at
+// the parameter's own scale the whole circle exports at 2^-20 .. 2^30 and
+// its patches lie on the surface.
+TEST(ExportRegression, ScaledPrcsWholeCircleExports) {
+  cyc_context* ctx = nullptr;
+  ASSERT_EQ(cyc_context_create(nullptr, &ctx), CYC_OK);
+  for (int k : {-20, -10, 0, 10, 20, 30}) {
+    const double s = std::ldexp(1.0, k);
+    double O[3] = {-1, -1, -1}, X[3] = {1, -0.3, -0.3}, P[3] = {-1.3, -1.3, 0},
+           W[3] = {2, 0.7, -0.3};
+    for (int i = 0; i < 3; ++i) O[i] *= s, P[i] *= s, X[i] *= s, W[i] *= s;
+    cyc_curve *a = nullptr, *b = nullptr;
+    ASSERT_EQ(cyc_curve_create_line(ctx, O, X, &a), CYC_OK);
+    ASSERT_EQ(cyc_curve_create_line(ctx, P, W, &b), CYC_OK);
+    cyc_surface* S = nullptr;
+    ASSERT_EQ(cyc_prcs_create(ctx, a, b, nullptr, -0.5, 0.5, &S), CYC_OK);
+    const cyc_export_domain D{-0.5, 0.3, 0, 0, 1};
+    cyc_bezier_export* E = nullptr;
+    ASSERT_EQ(cyc_bezier_export_create(ctx, S, &D, &E), CYC_OK)
+        << "2^" << k << ": " << cyc_context_last_error(ctx);
+    for (int p = 0; p < cyc_bezier_export_count(E); ++p) {
+      double x[3], uv[2], y[3];
+      ASSERT_EQ(cyc_bezier_export_eval(ctx, E, p, 0.5, 0.5, x, uv), CYC_OK);
+      ASSERT_EQ(cyc_surface_eval(ctx, S, uv[0], uv[1], y, nullptr, nullptr, nullptr), CYC_OK);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(x[c], y[c], 1e-9 * 4 * s) << k;
+    }
+    cyc_bezier_export_destroy(E);
+    cyc_surface_destroy(ctx, S);
+    cyc_curve_destroy(ctx, a);
+    cyc_curve_destroy(ctx, b);
+  }
+  cyc_context_destroy(ctx);
+}
+
 // The skin's whole-circle export likewise.
 TEST_F(ExportInputs, SkinWholeCircleEvalIsFinite) {
   const cyc_export_domain D{0, 1, 0, 0, 1};
