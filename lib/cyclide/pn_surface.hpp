@@ -49,9 +49,12 @@ struct PnSurface {
   int degree_u = 0;
   int degree_v = 0;
   Vec4d control[(kMaxPnDegree + 1) * (kMaxPnDegree + 1)];
-  // Reference parametric speeds of y and of (y1, y2): max(degree) *
-  // (w_max / w_min) * the longest edge of the affine control net. They set
-  // the scale of "X = 0" and "X0 = 0" when a partial vanishes.
+  // Reference parametric speeds of y3 (a length) and of (y1, y2)
+  // (dimensionless): max(degree) * (w_max / w_min) * the longest edge of the
+  // affine control net in y3, resp. in (y1, y2). Kept apart, since the
+  // isotropic similarities (rotations about z, scalings, translations) move
+  // y3 and leave |(y1, y2)| alone; they set the scale of "X = 0" and
+  // "X0 = 0" when a partial vanishes.
   double speed_ref = 0;
   double speed_ref_12 = 0;
   // Psi is a point (all planes equal) or lies on an isotropic line (all
@@ -92,11 +95,17 @@ Status pn_isotropic_jet(const PnSurface& S, double u, double v, IsotropicJet& ou
 // (u, v), with partials, unit normal and tangent plane (Theorem 3.2, (2.6)).
 //   bad_domain          (u, v) outside [0, 1]^2
 //   not_finite          u, v or d NaN/Inf or |d| > kMaxInputMagnitude
-//   developable         S.degenerate, or |X| <= kPnDevelopableTol * |P| *
-//                       max(|P_u|, B) * max(|P_v|, B), B = 2 (1 + |y|) S.speed_ref
 //   point_at_infinity   |X0| <= kPnAtInfinityTol * N * max(|P~_u|, B12) *
 //                       max(|P~_v|, B12), P~ the normal part (P1, P2, P3),
-//                       B12 = 2 (1 + |(y1, y2)|) S.speed_ref_12
+//                       B12 = 2 (1 + |(y1, y2)|) S.speed_ref_12 (X0 = 4 N det J
+//                       is dimensionless: the test is invariant under the
+//                       isotropic similarities)
+//   developable         S.degenerate, or X0 = 0 as above and also the length
+//                       part (X1, X2, X3) <= kPnDevelopableTol * (|P0| m_u m_v +
+//                       |P~| l_u m_v + |P~| m_u l_v), m = max(|P~_*|, B12),
+//                       l = max(|P0_*|, 2 S.speed_ref) (each X_i is a length
+//                       times two dimensionless factors: the reference has
+//                       the same units, so the test moves with the data)
 //   numerical_overflow  a non-finite intermediate or output
 // out is written only on ok. Allocation-free, O(degree_u * degree_v).
 Status pn_surface_eval(const PnSurface& S, double u, double v, double d, PnPoint& out) noexcept;

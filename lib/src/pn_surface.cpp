@@ -111,7 +111,7 @@ Status make_pn_surface(const Vec4d* control, int degree_u, int degree_v, PnSurfa
   if (degree_u < 0 || degree_v < 0) return Status::invalid_argument;
   if (degree_u > kMaxPnDegree || degree_v > kMaxPnDegree) return Status::degree_too_high;
   const int count = (degree_u + 1) * (degree_v + 1);
-  double w_min = HUGE_VAL, w_max = 0, y_big = 0, y12_big = 0;
+  double w_min = HUGE_VAL, w_max = 0, y12_big = 0;
   for (int k = 0; k < count; ++k) {
     for (int c = 0; c < 4; ++c)
       if (!in_range(control[k][c])) return Status::not_finite;
@@ -121,7 +121,6 @@ Status make_pn_surface(const Vec4d* control, int degree_u, int degree_v, PnSurfa
     if (!in_range(y.cwiseAbs().maxCoeff())) return Status::not_finite;
     w_min = std::min(w_min, w);
     w_max = std::max(w_max, w);
-    y_big = std::max(y_big, y.cwiseAbs().maxCoeff());
     y12_big = std::max(y12_big, y.head<2>().cwiseAbs().maxCoeff());
   }
   // The longest edge of the affine control net, in y and in (y1, y2).
@@ -129,18 +128,18 @@ Status make_pn_surface(const Vec4d* control, int degree_u, int degree_v, PnSurfa
     const Vec4d& c = control[i * (degree_v + 1) + j];
     return c.tail<3>() / c[0];
   };
-  double edge = 0, edge12 = 0;
+  double edge3 = 0, edge12 = 0;
   for (int i = 0; i <= degree_u; ++i)
     for (int j = 0; j <= degree_v; ++j) {
       const Vec3d a = affine(i, j);
       if (i < degree_u) {
         const Vec3d e = affine(i + 1, j) - a;
-        edge = std::max(edge, e.norm());
+        edge3 = std::max(edge3, std::abs(e[2]));
         edge12 = std::max(edge12, e.head<2>().norm());
       }
       if (j < degree_v) {
         const Vec3d e = affine(i, j + 1) - a;
-        edge = std::max(edge, e.norm());
+        edge3 = std::max(edge3, std::abs(e[2]));
         edge12 = std::max(edge12, e.head<2>().norm());
       }
     }
@@ -149,11 +148,14 @@ Status make_pn_surface(const Vec4d* control, int degree_u, int degree_v, PnSurfa
   S.degree_v = degree_v;
   for (int k = 0; k < count; ++k) S.control[k] = control[k];
   const double scale = std::max({degree_u, degree_v, 1}) * (w_max / w_min);
-  S.speed_ref = scale * edge;
+  S.speed_ref = scale * edge3;
   S.speed_ref_12 = scale * edge12;
   // A point of I^3 is one plane; points of an isotropic line are parallel
-  // planes (seed 004 §3): neither has an envelope point.
-  S.degenerate = edge <= kPnMinExtent * (1 + y_big) || edge12 <= kPnMinExtent * (1 + y12_big);
+  // planes (seed 004 §3): neither has an envelope point. Both have all
+  // (y1, y2) equal, which the dimensionless extent edge12 detects; an extent
+  // in y (a length mixed with (y1, y2)) would depend on the model's scale
+  // and position.
+  S.degenerate = edge12 <= kPnMinExtent * (1 + y12_big);
   out = S;
   return Status::ok;
 }
@@ -196,14 +198,24 @@ Status pn_surface_eval(const PnSurface& S, double u, double v, double d, PnPoint
   if (!X.allFinite() || !X_u.allFinite() || !X_v.allFinite()) return Status::numerical_overflow;
 
   // Degenerate points, relative to the reference speeds of the net (a
-  // vanishing partial is judged against the speed it would have had).
-  const double B = 2 * (1 + J.y.norm()) * S.speed_ref;
-  const double dev_ref = P.p.norm() * std::max(P.p_u.norm(), B) * std::max(P.p_v.norm(), B);
-  if (!(X.norm() > kPnDevelopableTol * dev_ref)) return Status::developable;
+  // vanishing partial is judged against the speed it would have had). A
+  // plane vector P = (P0, P~) has a length P0 = 2 y3 and a dimensionless
+  // normal part P~; X0 = det(P~, P~_u, P~_v) is dimensionless, each of
+  // X1..X3 a length times two dimensionless factors. Each part is judged
+  // against a reference of its own units, so that the verdicts move with
+  // the isotropic similarities (rotations about z, scalings, translations).
   const double B12 = 2 * (1 + J.y.head<2>().norm()) * S.speed_ref_12;
-  const double inf_ref = normal_part_norm(P.p) * std::max(normal_part_norm(P.p_u), B12) *
-                         std::max(normal_part_norm(P.p_v), B12);
-  if (!(std::abs(X[0]) > kPnAtInfinityTol * inf_ref)) return Status::point_at_infinity;
+  const double np = normal_part_norm(P.p), m_u = std::max(normal_part_norm(P.p_u), B12),
+               m_v = std::max(normal_part_norm(P.p_v), B12);
+  const double inf_ref = np * m_u * m_v;
+  if (!(std::abs(X[0]) > kPnAtInfinityTol * inf_ref)) {
+    // X0 = 0: no finite point; developable if also the length part vanishes.
+    const double B0 = 2 * S.speed_ref;
+    const double l_u = std::max(std::abs(P.p_u[0]), B0), l_v = std::max(std::abs(P.p_v[0]), B0);
+    const double dev_ref = std::abs(P.p[0]) * m_u * m_v + np * l_u * m_v + np * m_u * l_v;
+    if (!(X.tail<3>().norm() > kPnDevelopableTol * dev_ref)) return Status::developable;
+    return Status::point_at_infinity;
+  }
 
   // x = (X1, X2, X3) / X0 and the quotient rule.
   const double X0 = X[0];
