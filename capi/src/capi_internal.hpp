@@ -467,6 +467,18 @@ inline Outcome emit_pieces(const char* fn, cyc_context* ctx, const Surface* S, i
   return ok();
 }
 
+// The sizes of a grid of parameters: two arrays of nu and nv values (each
+// addressable) and nu * nv points (fits in size_t), returned in count.
+inline Outcome check_grid_sizes(const char* fn, const char* us, size_t nu, const char* vs,
+                                size_t nv, size_t& count) {
+  TRY(check_span(fn, us, nu, 1, 1));
+  TRY(check_span(fn, vs, nv, 1, 1));
+  if (!size_product(nu, nv, count))
+    return fail(CYC_E_INVALID_ARGUMENT, "%s: %zu x %zu points (%s x %s) do not fit in size_t",
+                fn, nu, nv, us, vs);
+  return ok();
+}
+
 // A caller buffer for n vectors, or a reason why not.
 inline Outcome check_buffer(const char* fn, const char* name, const cyc_buffer3& b, size_t n) {
   if (!b.data) return ok();

@@ -664,9 +664,7 @@ int cyc_surface_eval_grid(cyc_context* ctx, const cyc_surface* surface, const do
     if (nu) REQUIRE(us);
     if (nv) REQUIRE(vs);
     size_t count = 0;
-    if (!size_product(nu, nv, count))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
-                  nu, nv);
+    TRY(check_grid_sizes(fn, "us", nu, "vs", nv, count));
     TRY(check_outputs(fn, points, du, dv, normals, count));
     const Status s = surface->surface.eval_grid(us, nu, vs, nv, strided(points),
                                                 strided(du), strided(dv),
@@ -1087,9 +1085,7 @@ int cyc_surface_eval_grid_inverted(cyc_context* ctx, const cyc_surface* surface,
     if (nu) REQUIRE(us);
     if (nv) REQUIRE(vs);
     size_t count = 0;
-    if (!size_product(nu, nv, count))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
-                  nu, nv);
+    TRY(check_grid_sizes(fn, "us", nu, "vs", nv, count));
     TRY(check_outputs(fn, points, du, dv, normals, count));
     Inversion I;
     TRY(read_inversion(fn, *inv, I));

@@ -571,9 +571,7 @@ int cyc_pn_surface_eval_grid(cyc_context* ctx, const cyc_pn_surface* surface, co
     if (nu) REQUIRE(us);
     if (nv) REQUIRE(vs);
     size_t count = 0;
-    if (!size_product(nu, nv, count))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: nu * nv = %zu * %zu does not fit in size_t", fn,
-                  nu, nv);
+    TRY(check_grid_sizes(fn, "us", nu, "vs", nv, count));
     if (Outcome o = check_buffer(fn, "points", points, count); o.status) return o;
     if (Outcome o = check_buffer(fn, "normals", normals, count); o.status) return o;
     TRY(check_double(fn, "d", d));

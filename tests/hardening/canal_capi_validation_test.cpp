@@ -394,7 +394,8 @@ TEST(CanalCapiCounts, HostileCountsAreRefusedByName) {
     }
 }
 
-// nu * nv beyond size_t: refused before any buffer is checked or written.
+// nu or nv beyond the address space (nu * nv may then wrap): refused
+// before any parameter is read or any buffer written, naming the array.
 TEST(CanalCapiCounts, GridSizeProductDoesNotWrap) {
   Env e;
   const double us[2] = {0, 0.5}, vs[2] = {0, 1};
@@ -408,9 +409,18 @@ TEST(CanalCapiCounts, GridSizeProductDoesNotWrap) {
                         : cyc_surface_eval_grid_inverted(e.ctx, e.S, &e.inv, us, big, vs, 2, P,
                                                          none, none, none, e.o<size_t>(2048));
     EXPECT_EQ(got, CYC_E_INVALID_ARGUMENT) << fn;
-    EXPECT_NE(last_error(e).find("nu * nv"), std::string::npos) << last_error(e);
+    EXPECT_NE(last_error(e).find(": us:"), std::string::npos) << last_error(e);
     EXPECT_TRUE(e.untouched());
   }
+  // One row of 2^61 parameters: nu * nv fits, the array vs cannot exist
+  // (it was read past its end).
+  e.seal();
+  const cyc_buffer3 none{nullptr, 0, 0};
+  EXPECT_EQ(cyc_surface_eval_grid(e.ctx, e.S, us, 1, vs, SIZE_MAX / 8 + 1, none, none, none,
+                                  none, nullptr),
+            CYC_E_INVALID_ARGUMENT);
+  EXPECT_NE(last_error(e).find(": vs:"), std::string::npos) << last_error(e);
+  EXPECT_TRUE(e.untouched());
 }
 
 // Strides whose rows would wrap the address space (row k at k * stride
