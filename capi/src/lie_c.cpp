@@ -773,10 +773,9 @@ int cyc_dupin_eval_grid(cyc_context* ctx, const cyc_dupin* cyclide, const double
     if (nzeta > 0) REQUIRE(zetas);
     DupinCyclide D;
     if (Outcome r = dupin_in(fn, "cyclide.", cyclide, D); r.status) return r;
-    size_t points_n = 0, doubles_n = 0;
-    if (!size_product(nxi, nzeta, points_n) || !size_product(points_n, 3, doubles_n))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: nxi * nzeta * 3 = %zu * %zu * 3 overflows", fn,
-                  nxi, nzeta);
+    size_t points_n = 0;
+    TRY(check_grid_sizes(fn, "xis", nxi, "zetas", nzeta, points_n));
+    TRY(check_span(fn, "points", points_n, 3, 3));  // the outputs: 3 doubles per point
     TRY(check_doubles(fn, "xis", xis, nxi));
     TRY(check_doubles(fn, "zetas", zetas, nzeta));
     TRY(check_double(fn, "offset", offset));

@@ -235,17 +235,20 @@ TEST_F(LieInputs, KindsTypesFamiliesAndIndicesOutsideTheirRangeAreRefused) {
   }
 }
 
-// Grid sizes whose product overflows size_t are refused before anything
-// is evaluated or written.
+// Grid sizes beyond the address space (an array that cannot exist, a
+// product that wraps, 3 doubles per point past PTRDIFF_MAX bytes) are
+// refused before anything is read, evaluated or written.
 TEST_F(LieInputs, GridSizesWhoseProductOverflowsAreRefused) {
   const double xs[1] = {0.5};
   double pts[3];
   poison(pts);
   const size_t big = SIZE_MAX / 2;
   expect(cyc_dupin_eval_grid(ctx, &D, xs, big, xs, 3, 0, pts, nullptr), CYC_E_INVALID_ARGUMENT,
-         "cyc_dupin_eval_grid", {"nxi * nzeta"});
-  expect(cyc_dupin_eval_grid(ctx, &D, xs, SIZE_MAX / 3 + 1, xs, 1, 0, pts, nullptr),
-         CYC_E_INVALID_ARGUMENT, "cyc_dupin_eval_grid", {"nxi * nzeta"});
+         "cyc_dupin_eval_grid", {"xis"});
+  expect(cyc_dupin_eval_grid(ctx, &D, xs, 1, xs, SIZE_MAX / 3 + 1, 0, pts, nullptr),
+         CYC_E_INVALID_ARGUMENT, "cyc_dupin_eval_grid", {"zetas"});
+  expect(cyc_dupin_eval_grid(ctx, &D, xs, size_t(1) << 30, xs, size_t(1) << 30, 0, pts, nullptr),
+         CYC_E_INVALID_ARGUMENT, "cyc_dupin_eval_grid", {"points"});
   EXPECT_TRUE(poisoned(pts));
 }
 
