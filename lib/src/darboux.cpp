@@ -493,6 +493,20 @@ Status dcmc(const Line (&lines)[3], DcmcFamily& out) {
   fill(F.quadric, hs, Vec3d::Zero());
   F.base = translate(F.base, -O);
   F.quadric = translate(F.quadric, -O);
+  // The output's normal form (SPEC §8b): a unit quadric, and as base the
+  // member of the family base + alpha quadric whose quadric part (phi2's
+  // ten coefficients) is orthogonal to it -- the minimum-norm solution of
+  // step 4 in X, as the frame's scaling and translation do not keep it.
+  double qq = 0;
+  for (int m = kQxx; m <= kC; ++m) qq += F.quadric.k[m] * F.quadric.k[m];
+  if (!(qq > 0) || !std::isfinite(qq)) return Status::numerical_overflow;
+  const double qn = std::sqrt(qq);
+  double bq = 0;
+  for (int m = kQxx; m <= kC; ++m) {
+    F.quadric.k[m] /= qn;
+    bq += F.base.k[m] * F.quadric.k[m];
+  }
+  for (int m = kQxx; m <= kC; ++m) F.base.k[m] -= bq * F.quadric.k[m];
   for (double v : F.base.k)
     if (!std::isfinite(v)) return Status::numerical_overflow;
   out = F;
