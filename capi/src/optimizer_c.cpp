@@ -741,9 +741,6 @@ int cyc_optimize_cyclide_blend(cyc_context* ctx, const cyc_lie_cone* r, const cy
     REQUIRE(r);
     REQUIRE(s);
     REQUIRE(out);
-    LieCone R0, S0;  // validated, fields named
-    TRY(cone_check(fn, "r", r, R0));
-    TRY(cone_check(fn, "s", s, S0));
 #if CYCLIDE_HAVE_CERES
     std::vector<Vec3d> points;
     std::vector<optim::SphereObstacle> obstacles;
@@ -754,7 +751,7 @@ int cyc_optimize_cyclide_blend(cyc_context* ctx, const cyc_lie_cone* r, const cy
       return e;
     CyclideBlend B;
     optim::BlendSummary R;
-    if (Status st = optim::optimize_cyclide_blend(R0, S0, O, P, B, R);
+    if (Status st = optim::optimize_cyclide_blend(cone_in(r), cone_in(s), O, P, B, R);
         st != Status::ok)
       return cone_status(fn, st);
     cyc_cyclide_blend c;
@@ -779,9 +776,6 @@ int cyc_optimize_cyclide_blend_parameters(cyc_context* ctx, const cyc_lie_cone* 
     REQUIRE(r);
     REQUIRE(s);
     REQUIRE(count);
-    LieCone R0, S0;  // validated, fields named
-    TRY(cone_check(fn, "r", r, R0));
-    TRY(cone_check(fn, "s", s, S0));
 #if CYCLIDE_HAVE_CERES
     std::vector<Vec3d> points;
     std::vector<optim::SphereObstacle> obstacles;
@@ -791,7 +785,7 @@ int cyc_optimize_cyclide_blend_parameters(cyc_context* ctx, const cyc_lie_cone* 
         e.status)
       return e;
     optim::FreeParameters D;
-    if (Status st = optim::describe_cyclide_blend_parameters(R0, S0, O, P, D);
+    if (Status st = optim::describe_cyclide_blend_parameters(cone_in(r), cone_in(s), O, P, D);
         st != Status::ok)
       return cone_status(fn, st);
     return emit_parameters(fn, D, params, capacity, count);
