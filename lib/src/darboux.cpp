@@ -507,6 +507,10 @@ Status dcmc(const Line (&lines)[3], DcmcFamily& out) {
     bq += F.base.k[m] * F.quadric.k[m];
   }
   for (int m = kQxx; m <= kC; ++m) F.base.k[m] -= bq * F.quadric.k[m];
+  // A translation keeps the cubic (n.X)|X|^2: phi1 is n exactly.
+  F.base.k[kLx] = n.x();
+  F.base.k[kLy] = n.y();
+  F.base.k[kLz] = n.z();
   for (double v : F.base.k)
     if (!std::isfinite(v)) return Status::numerical_overflow;
   out = F;
