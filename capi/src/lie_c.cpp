@@ -599,9 +599,12 @@ int cyc_dupin_classify_spheres(cyc_context* ctx, const cyc_lie_sphere spheres[3]
   return run(ctx, fn, [&] {
     REQUIRE(spheres);
     Lie6d a[3];
-    if (Outcome r = triple_in(fn, spheres, a); r.status) return r;
+    if (Outcome r = triple_in(fn, spheres, a); r.status) return r;  // validated, named
+    LieSphere L[3];
+    for (int i = 0; i < 3; ++i)
+      if (Outcome r = sphere_in(fn, "spheres", spheres[i], L[i]); r.status) return r;
     Signature sig;
-    const Status s = classify_sphere_triple(a, &sig);
+    const Status s = classify_spheres(L, &sig);  // as cyc_dupin_from_spheres reads them
     // The four answers of §3.1 report the span's signature (a pencil's
     // three distinct null lines make its 2-plane totally isotropic).
     if (s == Status::sphere_pencil) sig = Signature{0, 2, 0};

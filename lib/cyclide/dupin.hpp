@@ -114,6 +114,9 @@ Vec3<S> euclidean_point(const Lie6<S>& c) {
 // on a Euclidean-orthonormal basis, which shrink like 1/|m|^4 for spheres
 // far from the origin.
 Status classify_sphere_triple(const Lie6d (&a)[3], Signature* span_signature = nullptr);
+// The §3.1 case of three Lie spheres, read exactly as dupin_from_spheres
+// reads it (in the spheres' best frame), so that the two always agree.
+Status classify_spheres(const LieSphere (&s)[3], Signature* span_signature = nullptr);
 
 // Algorithm 1 (corrected) through the reference pair (28) and a Lie
 // transformation theta found by Witt's extension theorem: theta maps

@@ -316,19 +316,34 @@ Status dupin_from_local_vectors(const Lie6d (&a)[3], DupinCyclide& out) {
   return finish(theta, Vec3d::Zero(), out);
 }
 
-Status dupin_from_spheres(const LieSphere (&s)[3], DupinCyclide& out) {
-  Lie6d a[3];
+namespace {
+// (4)/(7) of three spheres in their best frame (best_frame): |m - origin| /
+// unit is the inputs' spread in their own size, not their distance from 0
+// in the unit length. The §3.1 case is read there too (classifying global
+// vectors would decode them, and their weight is lost beyond |m| ~ 1e8).
+Status spheres_in_best_frame(const LieSphere (&s)[3], Lie6d (&a)[3], Frame& F) {
   for (int i = 0; i < 3; ++i)  // the inputs' own statuses first
     if (Status st = lie_vector(s[i], a[i]); st != Status::ok) return st;
-  // (4)/(7) of the inputs in their best frame (best_frame): |m - origin| /
-  // unit is the inputs' spread in their own size, not their distance from
-  // 0 in the unit length. The §3.1 case is read there too (classify would
-  // decode global vectors, whose weight is lost beyond |m| ~ 1e8).
   const bool decoded[3] = {true, true, true};
-  const Frame F = best_frame(a, s, decoded, 3);
+  F = best_frame(a, s, decoded, 3);
   if (!F.origin.allFinite()) return Status::numerical_overflow;
   for (int i = 0; i < 3; ++i)
     if (Status st = lie_vector(in_frame(s[i], F), a[i]); st != Status::ok) return st;
+  return Status::ok;
+}
+}  // namespace
+
+Status classify_spheres(const LieSphere (&s)[3], Signature* span_signature) {
+  Lie6d a[3];
+  Frame F;
+  if (Status st = spheres_in_best_frame(s, a, F); st != Status::ok) return st;
+  return classify_sphere_triple(a, span_signature);
+}
+
+Status dupin_from_spheres(const LieSphere (&s)[3], DupinCyclide& out) {
+  Lie6d a[3];
+  Frame F;
+  if (Status st = spheres_in_best_frame(s, a, F); st != Status::ok) return st;
   if (Status st = classify_sphere_triple(a); st != Status::ok) return st;
   DupinCyclide D;
   if (Status st = dupin_from_local_vectors(a, D); st != Status::ok) return st;
