@@ -540,6 +540,10 @@ int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a, const cy
     REQUIRE(b);
     REQUIRE(pieces);
     REQUIRE(count);
+    // Pointers before values: the obstacle array the objective counts.
+    if (objective && objective->obstacle_count > 0 && !objective->obstacles)
+      return fail(CYC_E_NULL_ARGUMENT, "%s: objective.obstacles is NULL (objective.obstacle_count = %d)",
+                  fn, objective->obstacle_count);
 #if CYCLIDE_HAVE_CERES
     TRY(check_jet(fn, "a", *a));
     TRY(check_jet(fn, "b", *b));
