@@ -878,6 +878,9 @@ void check_status(Ctx& c, const OptCall& o, unsigned m, int st) {
     return;
   }
   if (m) {
+    // A field beyond the input range |x| <= 1e100 is NOT_FINITE (by its
+    // name) before any range check.
+    if (m & bit(CYC_E_INVALID_ARGUMENT)) m |= bit(CYC_E_NOT_FINITE);
     FZ_CHECK(st > 0 && st < 32 && (m & bit(st)), "optimize_blend: %s, expected mask %#x", name,
              m);
     return;

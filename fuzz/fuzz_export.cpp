@@ -599,7 +599,7 @@ void op_export(State& st) {
     rb = cyc_bezier_export_eval(st.ctx, e, kk, s, t, x, uv);
     st.check("cyc_bezier_export_eval", rb);
     const int want = (kk < 0 || kk >= count)          ? CYC_E_INVALID_ARGUMENT
-                     : (std::isnan(s) || std::isnan(t)) ? CYC_E_NOT_FINITE
+                     : !(std::abs(s) <= 1e100 && std::abs(t) <= 1e100) ? CYC_E_NOT_FINITE
                      : !(s >= 0 && s <= 1 && t >= 0 && t <= 1) ? CYC_E_BAD_DOMAIN
                                                                  : -1;
     if (want >= 0) {

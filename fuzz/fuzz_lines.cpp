@@ -502,7 +502,9 @@ void parameterize(Input& in, Ctx& c, const cyc_darboux& D, const cyc_cyclide_lin
       FZ_CHECK(s == CYC_E_NOT_CANAL, "PRCS without a double line: %s", cyc_status_name(s));
     if (lines_status != CYC_OK && lines_status != CYC_E_NULL_ARGUMENT &&
         (kind == CYC_SURFACE_PRCS || kind == CYC_SURFACE_PRRS))
-      FZ_CHECK(s == lines_status, "parabolic_lines failed with %s but parameterize %s",
+      // (parameterize validates its own numbers first: NOT_FINITE names one)
+      FZ_CHECK(s == lines_status || s == CYC_E_NOT_FINITE,
+               "parabolic_lines failed with %s but parameterize %s",
                cyc_status_name(lines_status), cyc_status_name(s));
     return;
   }

@@ -458,6 +458,9 @@ void op_chain(State& st) {
     FZ_CHECK(h == kSentinel, "chain wrote *out on error");
     if (validation || s == CYC_E_OUT_OF_MEMORY || !with_bad) {
       FZ_CHECK(bad == kBadSentinel, "chain wrote *bad_patch = %d on %s", bad, cyc_status_name(s));
+    } else if ((s == CYC_E_NOT_FINITE || s == CYC_E_INVALID_ARGUMENT) && bad == kBadSentinel) {
+      // Refused by the validation of every end and option before any patch
+      // is built (the message names the field): no patch failed.
     } else {
       FZ_CHECK(bad >= 0 && bad <= n - 2, "chain: bad_patch %d of %d ends", bad, n);
       if (s == CYC_E_NOT_FINITE)
