@@ -498,8 +498,9 @@ void op_export(State& st) {
          D.whole_circle);
   // The statuses the domain alone decides.
   const bool rect = D.whole_circle == 0;
-  const bool nonfinite = !std::isfinite(D.u0) || !std::isfinite(D.u1) ||
-                         (rect && (!std::isfinite(D.v0) || !std::isfinite(D.v1)));
+  // (beyond the input range |x| <= 1e100 is NOT_FINITE, like NaN and Inf)
+  const auto beyond = [](double x) { return !(std::abs(x) <= 1e100); };
+  const bool nonfinite = beyond(D.u0) || beyond(D.u1) || (rect && (beyond(D.v0) || beyond(D.v1)));
   const bool baddom = !(st.u0 <= D.u0 && D.u0 < D.u1 && D.u1 <= st.u1) || (rect && !(D.v0 < D.v1));
   const bool oom = st.tracker && seldom(in);
   if (oom) st.tracker->fail_at = st.tracker->count;
@@ -1219,7 +1220,8 @@ void op_write(State& st) {
     opt.weld_tolerance = kWeld[in.range(0, 7)];
     const int nm = in.range(0, 8);
     opt.name = nm == 8 ? longname.c_str() : kNames[nm];
-    opt_bad = std::isnan(opt.weld_tolerance) || opt.weld_tolerance == HUGE_VAL ||
+    // (a weld tolerance beyond the input range |x| <= 1e100, -inf too, is refused)
+    opt_bad = !(std::abs(opt.weld_tolerance) <= 1e100) ||
               (opt.name && (std::strchr(opt.name, '\n') || std::strchr(opt.name, '\r') ||
                             std::strlen(opt.name) > 256));
     if (want < 0 && opt_bad) want = CYC_E_INVALID_ARGUMENT;
@@ -1248,7 +1250,7 @@ void op_write(State& st) {
   st.check("cyc_mesh_write", r);
   FZ_CHECK(!exists(path + ".part"), "mesh part file left (%s)", cyc_status_name(r));
   if (want >= 0)
-    FZ_CHECK(r == want || (opt_bad && r == CYC_E_INVALID_ARGUMENT),
+    FZ_CHECK(r == want || (opt_bad && (r == CYC_E_INVALID_ARGUMENT || r == CYC_E_NOT_FINITE)),
              "mesh write: %s, expected %s (%s)", cyc_status_name(r),
              cyc_status_name(want), cyc_context_last_error(st.ctx));
   else

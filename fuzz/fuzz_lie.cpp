@@ -739,7 +739,8 @@ void op_eval(State& st) {
   poison(P);
   const int r = cyc_dupin_eval(st.ctx, &D, xi, zeta, offset, &P);
   st.check("cyc_dupin_eval", r);
-  if (valid && std::isfinite(xi) && std::isfinite(zeta) && std::isfinite(offset))
+  // (the offset is a length: beyond the input range |x| <= 1e100 it is refused)
+  if (valid && std::abs(xi) <= 1e100 && std::abs(zeta) <= 1e100 && std::abs(offset) <= 1e100)
     FZ_CHECK(!is_value_error(r), "a valid cyclide rejected: %s", cyc_context_last_error(st.ctx));
   if (r != CYC_OK) {
     FZ_CHECK(poisoned(P), "eval wrote on error");

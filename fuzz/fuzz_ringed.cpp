@@ -236,8 +236,9 @@ void op_blend(Input& in, Ctx& c) {
   if (!null_options) nonfinite = nonfinite || bad_value(o.tau);
   if (nulls)
     FZ_CHECK(s == CYC_E_NULL_ARGUMENT, "NULL gives %s", cyc_status_name(s));
-  else if (!null_options && o.sign != 1 && o.sign != -1)
-    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "sign %d gives %s", o.sign, cyc_status_name(s));
+  else if (!null_options && o.sign != 1 && o.sign != -1)  // (values are judged first)
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT || s == CYC_E_NOT_FINITE, "sign %d gives %s", o.sign,
+             cyc_status_name(s));
   else if (nonfinite)
     FZ_CHECK(s == CYC_E_NOT_FINITE, "non-finite data give %s", cyc_status_name(s));
   else if (!null_options && o.v[0] == 0 && o.v[1] == 0 && o.v[2] == 0)
@@ -404,8 +405,8 @@ void op_dnr(Input& in, Ctx& c) {
     FZ_CHECK(s == CYC_E_NOT_FINITE,
              "cyc_ringed_dnr_create: non-finite rho gives %s", cyc_status_name(s));
   else if (!null_options && (o.method < 0 || o.method > 3))
-    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "cyc_ringed_dnr_create: method %d gives %s", o.method,
-             cyc_status_name(s));
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT || s == CYC_E_NOT_FINITE,  // (values are judged first)
+             "cyc_ringed_dnr_create: method %d gives %s", o.method, cyc_status_name(s));
   if (s != CYC_OK) {
     FZ_CHECK(out == kSentinel && std::memcmp(&rep, &rep0, sizeof rep) == 0,
              "cyc_ringed_dnr_create: outputs written on error");
@@ -490,7 +491,8 @@ void op_bump(Input& in, Ctx& c) {
   c.check("cyc_blend_ringed_pcurve_bump", s);
   const bool w_zero = bump.w[0] == 0 && bump.w[1] == 0 && bump.w[2] == 0;
   if (!null_bump && bump.kind != CYC_BUMP_SINGLE && bump.kind != CYC_BUMP_TWO_PIECE)
-    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "bump kind %d gives %s", bump.kind, cyc_status_name(s));
+    FZ_CHECK(s == CYC_E_INVALID_ARGUMENT || s == CYC_E_NOT_FINITE,  // (values are judged first)
+             "bump kind %d gives %s", bump.kind, cyc_status_name(s));
   if (s != CYC_OK) {
     FZ_CHECK(pieces[0] == kSentinel && pieces[1] == kSentinel && count == -7,
              "bump: outputs written on error");

@@ -457,7 +457,10 @@ double parameter_scale(const Data& X) {
 int initial_pieces(const ExportDomain& D, double c, VPiece (&p)[5]) {
   double cuts[4];
   int nc = 0;
-  const bool far = !(std::abs(std::log2(c)) <= 3.0);
+  // Not beyond 2^+-48: the NURBS form's tau = 2 sign(v) - 1/v could no
+  // longer tell the pieces at +-c from those at infinity (N1).
+  const double e = std::abs(std::log2(c));
+  const bool far = e > 3.0 && e < 48.0;
   if (far && c < 1.0) cuts[nc++] = -1.0, cuts[nc++] = -c, cuts[nc++] = c, cuts[nc++] = 1.0;
   else if (far) cuts[nc++] = -c, cuts[nc++] = -1.0, cuts[nc++] = 1.0, cuts[nc++] = c;
   else cuts[nc++] = -1.0, cuts[nc++] = 1.0;
