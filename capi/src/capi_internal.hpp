@@ -327,6 +327,14 @@ inline Outcome check_double(const char* fn, const char* name, double x) {
   return fail(CYC_E_NOT_FINITE, "%s: %s = %.17g %s", fn, name, x, what_is_wrong(x));
 }
 
+// A length, scale or tolerance that must be positive: check_double, then
+// x > 0.
+inline Outcome check_positive(const char* fn, const char* name, double x) {
+  TRY(check_double(fn, name, x));
+  if (!(x > 0)) return fail(CYC_E_INVALID_ARGUMENT, "%s: %s = %.17g is not positive", fn, name, x);
+  return ok();
+}
+
 // n doubles of an array argument or field, named name[i].
 inline Outcome check_doubles(const char* fn, const char* name, const double* x, size_t n) {
   for (size_t i = 0; i < n; ++i)

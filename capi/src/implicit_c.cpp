@@ -98,6 +98,20 @@ Outcome approx_options_valid(const char* fn, const cyc_implicit_approx_options& 
 
 extern "C" {
 
+namespace {
+// The ten coefficients of a quadric for the caller, if finite (else
+// nothing is written).
+Outcome quadric_out(const char* fn, const Quadric& Q, double* coeffs) {
+  double q[10];
+  quadric_coefficients(Q, q);
+  for (double c : q)
+    if (!std::isfinite(c))
+      return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: a coefficient of the quadric overflows", fn);
+  std::memcpy(coeffs, q, sizeof q);
+  return ok();
+}
+}  // namespace
+
 int cyc_implicit_cylinder(cyc_context* ctx, const double point[3], const double direction[3],
                           double radius, double coeffs[10]) {
   const char* fn = "cyc_implicit_cylinder";
@@ -107,22 +121,14 @@ int cyc_implicit_cylinder(cyc_context* ctx, const double point[3], const double 
     REQUIRE(coeffs);
     TRY(check_doubles(fn, "point", point, 3));
     TRY(check_doubles(fn, "direction", direction, 3));
-    TRY(check_double(fn, "radius", radius));
-    if (!(radius > 0))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: radius = %.17g is not positive", fn, radius);
+    TRY(check_positive(fn, "radius", radius));
     Quadric Q;
     if (Status st = make_cylinder(vec(point), vec(direction), radius, Q); st != Status::ok) {
       if (st == Status::invalid_argument)
         return fail(int(st), "%s: direction is zero: the cylinder has no axis", fn);
       return from_core(fn, st);
     }
-    double q[10];
-    quadric_coefficients(Q, q);
-    for (double c : q)
-      if (!std::isfinite(c))
-        return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: a coefficient of the quadric overflows", fn);
-    std::memcpy(coeffs, q, sizeof q);
-    return ok();
+    return quadric_out(fn, Q, coeffs);
   });
 }
 
@@ -145,13 +151,7 @@ int cyc_implicit_cone(cyc_context* ctx, const double apex[3], const double axis[
         return fail(int(st), "%s: axis is zero: the cone has no axis", fn);
       return from_core(fn, st);
     }
-    double q[10];
-    quadric_coefficients(Q, q);
-    for (double c : q)
-      if (!std::isfinite(c))
-        return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: a coefficient of the quadric overflows", fn);
-    std::memcpy(coeffs, q, sizeof q);
-    return ok();
+    return quadric_out(fn, Q, coeffs);
   });
 }
 

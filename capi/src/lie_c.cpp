@@ -502,8 +502,7 @@ int cyc_lie_transform_scaling(cyc_context* ctx, double s, cyc_lie_transform* out
   const char* fn = "cyc_lie_transform_scaling";
   return run(ctx, fn, [&] {
     REQUIRE(out);
-    TRY(check_double(fn, "s", s));
-    if (!(s > 0)) return fail(CYC_E_INVALID_ARGUMENT, "%s: s = %.17g is not positive", fn, s);
+    TRY(check_positive(fn, "s", s));
     return transform_out(fn, lie_scaling(s), out);
   });
 }
@@ -524,9 +523,7 @@ int cyc_lie_transform_inversion(cyc_context* ctx, const double center[3], double
     REQUIRE(center);
     REQUIRE(out);
     TRY(check_doubles(fn, "center", center, 3));
-    TRY(check_double(fn, "radius", radius));
-    if (!(radius > 0))
-      return fail(CYC_E_INVALID_ARGUMENT, "%s: radius = %.17g is not positive", fn, radius);
+    TRY(check_positive(fn, "radius", radius));
     return transform_out(fn, lie_inversion(vec(center), radius), out);
   });
 }

@@ -540,11 +540,11 @@ int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a, const cy
     REQUIRE(b);
     REQUIRE(pieces);
     REQUIRE(count);
-    // Pointers before values: the obstacle array the objective counts.
-    if (objective && objective->obstacle_count > 0 && !objective->obstacles)
-      return fail(CYC_E_NULL_ARGUMENT, "%s: objective.obstacles is NULL (objective.obstacle_count = %d)",
-                  fn, objective->obstacle_count);
 #if CYCLIDE_HAVE_CERES
+    // Pointers before values: the obstacle array the objective counts.
+    if (objective)
+      TRY(check_items(fn, "objective.obstacle_count", objective->obstacle_count,
+                      "objective.obstacles", objective->obstacles));
     TRY(check_jet(fn, "a", *a));
     TRY(check_jet(fn, "b", *b));
     TRY(check_pcurve_inputs(fn, blend, start));

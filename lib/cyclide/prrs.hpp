@@ -15,6 +15,37 @@
 namespace cyclide {
 inline namespace v0 {
 
+// The normals of the planes (24)-(26), from e2 = p1 - p2 and e3 = p1 - p3:
+// n = e2 x e3 (M), 2 e2 (B1), 2 e3 (B2).
+template <int K, class S>
+void prrs_normals(const Vec3<Taylor<S, K>>& e2, const Vec3<Taylor<S, K>>& e3,
+                  ThreePlanes<Taylor<S, K>>& T) {
+  T.n[0] = e2.cross(e3);
+  T.n[1] = Taylor<S, K>(S(2.0)) * e2;
+  T.n[2] = Taylor<S, K>(S(2.0)) * e3;
+}
+
+// The planes (24)-(26) in the local variable Y = X - p1(u):
+//   M: n . Y = 0,  B1: 2 (p1 - p2) . Y = -|p1 - p2|^2,
+//   B2: 2 (p1 - p3) . Y = -|p1 - p3|^2,
+// the same normals as prrs_planes (the same relative determinant), with
+// right-hand sides of the model's size instead of the differences
+// |p1|^2 - |p_j|^2 that cancel to eps |p|^2 far from the origin (see
+// prcs_local_planes). The directrix is c = p1 + Y.
+template <int K, class S>
+ThreePlanes<Taylor<S, K>> prrs_local_planes(const Vec3<Taylor<S, K>>& q1,
+                                             const Vec3<Taylor<S, K>>& q2,
+                                             const Vec3<Taylor<S, K>>& q3) {
+  using T_ = Taylor<S, K>;
+  const Vec3<T_> e2 = q1 - q2, e3 = q1 - q3;
+  ThreePlanes<T_> T;
+  prrs_normals<K, S>(e2, e3, T);
+  T.b[0] = T_(S(0.0));
+  T.b[1] = -e2.dot(e2);
+  T.b[2] = -e3.dot(e3);
+  return T;
+}
+
 // The planes (24), (25), (26) at u as series of order K:
 //   M: n . X = n . p1,  B1: 2 (p1 - p2) . X = |p1|^2 - |p2|^2,
 //   B2: 2 (p1 - p3) . X = |p1|^2 - |p3|^2.
@@ -23,12 +54,8 @@ inline namespace v0 {
 template <int K, class S>
 ThreePlanes<Taylor<S, K>> prrs_planes(const Vec3<Taylor<S, K>>& q1, const Vec3<Taylor<S, K>>& q2,
                                        const Vec3<Taylor<S, K>>& q3) {
-  using T_ = Taylor<S, K>;
-  const Vec3<T_> e2 = q1 - q2, e3 = q1 - q3;
-  ThreePlanes<T_> T;
-  T.n[0] = e2.cross(e3);
-  T.n[1] = T_(S(2.0)) * e2;
-  T.n[2] = T_(S(2.0)) * e3;
+  ThreePlanes<Taylor<S, K>> T;
+  prrs_normals<K, S>(q1 - q2, q1 - q3, T);
   T.b[0] = T.n[0].dot(q1);
   T.b[1] = q1.dot(q1) - q2.dot(q2);
   T.b[2] = q1.dot(q1) - q3.dot(q3);
@@ -48,29 +75,6 @@ Status check_prrs_planes(const ThreePlanes<S>& T) {
   if (!planes_finite(T)) return Status::numerical_overflow;  // a pole
   if (!(relative_determinant(T) > kDependentPlanesTol)) return Status::collinear_points;
   return Status::ok;
-}
-
-// The planes (24)-(26) in the local variable Y = X - p1(u):
-//   M: n . Y = 0,  B1: 2 (p1 - p2) . Y = -|p1 - p2|^2,
-//   B2: 2 (p1 - p3) . Y = -|p1 - p3|^2,
-// the same normals as prrs_planes (the same relative determinant), with
-// right-hand sides of the model's size instead of the differences
-// |p1|^2 - |p_j|^2 that cancel to eps |p|^2 far from the origin (see
-// prcs_local_planes). The directrix is c = p1 + Y.
-template <int K, class S>
-ThreePlanes<Taylor<S, K>> prrs_local_planes(const Vec3<Taylor<S, K>>& q1,
-                                             const Vec3<Taylor<S, K>>& q2,
-                                             const Vec3<Taylor<S, K>>& q3) {
-  using T_ = Taylor<S, K>;
-  const Vec3<T_> e2 = q1 - q2, e3 = q1 - q3;
-  ThreePlanes<T_> T;
-  T.n[0] = e2.cross(e3);
-  T.n[1] = T_(S(2.0)) * e2;
-  T.n[2] = T_(S(2.0)) * e3;
-  T.b[0] = T_(S(0.0));
-  T.b[1] = -e2.dot(e2);
-  T.b[2] = -e3.dot(e3);
-  return T;
 }
 
 template <int N, class S>

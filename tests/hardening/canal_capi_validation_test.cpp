@@ -24,11 +24,12 @@
 #include <vector>
 
 #include "cyclide/cyclide.h"
+#include "hostile.hpp"
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using hostile::kInf;
+using hostile::kNaN;
 constexpr unsigned char kSentinel = 0xA5;
 
 // Valid inputs of every entry point; the tests change one field at a time.

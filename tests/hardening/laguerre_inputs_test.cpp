@@ -9,6 +9,8 @@
 
 #include <cyclide/cyclide.h>
 
+#include "hostile.hpp"
+
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -19,8 +21,8 @@
 
 namespace {
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
-const double kInf = std::numeric_limits<double>::infinity();
+using hostile::kInf;
+using hostile::kNaN;
 
 struct Ctx {
   cyc_context* ctx = nullptr;

@@ -12,17 +12,11 @@
 #include <cstring>
 
 #include "cyclide/cyclide.h"
+#include "lie_spheres.hpp"
 
 namespace {
 
-cyc_lie_sphere sphere(double x, double y, double z, double rho) {
-  cyc_lie_sphere s;
-  std::memset(&s, 0, sizeof s);
-  s.kind = CYC_LIE_SPHERE;
-  s.m[0] = x, s.m[1] = y, s.m[2] = z;
-  s.rho = rho;
-  return s;
-}
+using namespace hostile;
 
 double dist3(const double* a, const double* b) {
   return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);

@@ -13,44 +13,15 @@
 #include <string>
 
 #include "cyclide/cyclide.h"
+#include "lie_spheres.hpp"
+#include "hostile.hpp"
 
 namespace {
 
-template <class T>
-void poison(T& x) {
-  std::memset(static_cast<void*>(&x), 0xA5, sizeof x);
-}
-template <class T>
-bool poisoned(const T& x) {
-  const unsigned char* p = reinterpret_cast<const unsigned char*>(&x);
-  for (size_t i = 0; i < sizeof x; ++i)
-    if (p[i] != 0xA5) return false;
-  return true;
-}
-
-cyc_lie_sphere sphere(double x, double y, double z, double rho) {
-  cyc_lie_sphere s;
-  std::memset(&s, 0, sizeof s);
-  s.kind = CYC_LIE_SPHERE;
-  s.m[0] = x, s.m[1] = y, s.m[2] = z;
-  s.rho = rho;
-  return s;
-}
-
-cyc_lie_sphere plane(double nx, double ny, double nz, double lambda) {
-  cyc_lie_sphere s;
-  std::memset(&s, 0, sizeof s);
-  s.kind = CYC_LIE_PLANE;
-  s.n[0] = nx, s.n[1] = ny, s.n[2] = nz;
-  s.lambda = lambda;
-  return s;
-}
+using namespace hostile;
 
 const int kBadInts[] = {INT_MIN, -1, INT_MAX};
 const int kBadSigns[] = {INT_MIN, 0, 2, INT_MAX};  // for arguments that are +1 or -1
-const double kBadDoubles[] = {std::numeric_limits<double>::quiet_NaN(),
-                              std::numeric_limits<double>::infinity(),
-                              -std::numeric_limits<double>::infinity(), 1e308, -1e101};
 
 struct LieInputs : ::testing::Test {
   cyc_context* ctx = nullptr;

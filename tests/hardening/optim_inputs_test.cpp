@@ -14,25 +14,13 @@
 #include <string>
 
 #include "cyclide/cyclide.h"
+#include "hostile.hpp"
 
 namespace {
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
-const double kInf = std::numeric_limits<double>::infinity();
-const double kBadDoubles[] = {kNaN, kInf, -kInf, 1e308, -1e101};
-const int kBadCounts[] = {INT_MIN, -1, INT_MAX};
+using namespace hostile;
 
-template <class T>
-void poison(T& x) {
-  std::memset(static_cast<void*>(&x), 0xA5, sizeof x);
-}
-template <class T>
-bool poisoned(const T& x) {
-  const unsigned char* p = reinterpret_cast<const unsigned char*>(&x);
-  for (size_t i = 0; i < sizeof x; ++i)
-    if (p[i] != 0xA5) return false;
-  return true;
-}
+const int kBadCounts[] = {INT_MIN, -1, INT_MAX};
 
 // Seed 000 Fig. 6's cones (as tests/optimizer_test.cpp): a PRRS cone of
 // three lines through A.
