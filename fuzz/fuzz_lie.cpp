@@ -588,16 +588,25 @@ void judge_point(const cyc_dupin& D, double xi, double zeta, const cyc_dupin_poi
   if (!(na > 0) || !(nb > 0)) return;
   const double kappa =
       double((long double)th * th * (1 + x * x) * (1 + z * z) / (na * nb));
-  // theta acts on local coordinates: the point minus the cyclide's origin.
-  const double q[3] = {P.point[0] - D.origin[0], P.point[1] - D.origin[1],
-                       P.point[2] - D.origin[2]};
+  // theta acts on local coordinates: the point minus the cyclide's origin,
+  // in its unit.
+  const double q[3] = {(P.point[0] - D.origin[0]) / D.unit, (P.point[1] - D.origin[1]) / D.unit,
+                       (P.point[2] - D.origin[2]) / D.unit};
   const double np = fz::norm3(q);
   if (!(kappa <= 1e6) || !(np <= 1e6)) return;
   const long double p2 =
       (long double)q[0] * q[0] + (long double)q[1] * q[1] + (long double)q[2] * q[2];
   const long double xp[6] = {2.0L * q[0], 2.0L * q[1], 2.0L * q[2], p2 - 1, p2 + 1, 0};
   const long double res = std::abs(ldot(xp, a)) / (lnorm(xp) * na);
-  const double tol = (1e-9 * far(q) + 1e3 * theta_defect(D)) * kappa;
+  // The point is the local point plus the origin rounded to the world's
+  // grid, so q is off by up to delta = eps (|point| + |origin|) per
+  // coordinate whatever the core does (a model of size 60 placed 1e30 from
+  // the origin has no representable point on it); xp moves by |d xp / dq|
+  // delta <= 2 (1 + 2 |q|) delta, the residual by that over |xp|.
+  const double delta = 4 * std::numeric_limits<double>::epsilon() *
+                       (fz::norm3(P.point) + fz::norm3(D.origin)) / D.unit;
+  const double world = 4 * (1 + 2 * np) * delta / double(lnorm(xp));
+  const double tol = (1e-9 * far(q) + 1e3 * theta_defect(D)) * kappa + world;
   FZ_CHECK(res <= tol, "point off a(xi): contact residual %Lg > %g (kappa %g)", res, tol, kappa);
 }
 
@@ -714,8 +723,9 @@ bool operand(State& st, cyc_dupin& D, bool& valid, bool& moderate) {
       break;
     }
     case 2: {  // corrupted
-      const int k = in.range(0, 37);
+      const int k = in.range(0, 38);
       if (k == 36) D.type = in.range(-1, 5);
+      else if (k == 38) D.unit = in.flag() ? in.wild() : -D.unit;  // not positive or not finite
       else if (k == 37) D.origin[in.range(0, 2)] = in.wild();  // NaN/Inf: CYC_E_NOT_FINITE
       else D.theta[k] = in.flag() ? in.wild() : D.theta[k] + param(in);
       valid = false;
@@ -838,9 +848,16 @@ void op_grid(State& st) {
                                     want_p ? P.data() : nullptr, want_n ? N.data() : nullptr);
   st.check("cyc_dupin_eval_grid", r);
   FZ_CHECK(fz::is_sentinel(P.back()) && fz::is_sentinel(N.back()), "grid wrote past its end");
-  // The first failing single evaluation decides the grid's status.
+  // Every parameter is checked first (NaN/Inf or beyond 1e100:
+  // CYC_E_NOT_FINITE); then the first failing single evaluation decides
+  // the grid's status.
   int expect = CYC_OK;
   if (!(valid || !is_value_error(r))) return;  // a corrupted value: any rejection is fine
+  const auto in_range = [](double v) { return std::abs(v) <= 1e100; };
+  bool inputs_ok = in_range(offset);
+  for (size_t i = 0; i < nx; ++i) inputs_ok = inputs_ok && in_range(xs[i]);
+  for (size_t j = 0; j < nz; ++j) inputs_ok = inputs_ok && in_range(zs[j]);
+  if (!inputs_ok) expect = CYC_E_NOT_FINITE;
   for (size_t i = 0; i < nx && expect == CYC_OK; ++i)
     for (size_t j = 0; j < nz && expect == CYC_OK; ++j) {
       cyc_dupin_point Q;

@@ -597,13 +597,15 @@ RC_GTEST_PROP(LieProperties, NormalAndOffsetAreRational, ()) {
   const double ner = dot_e_r(Nv), hinf = dot_n_infinity(Hv);
   const Vec3d n = Nv.head<3>() / ner;
   const Vec3d c = -Hv.head<3>() / hinf;
-  const Vec3d off = (-Hv.head<3>() * ner + d * Nv.head<3>() * hinf) / (hinf * ner);
-  // theta's vectors are local: the point is theta's point + D.origin.
-  const Vec3d local = P.point - D.origin;
+  // theta's vectors are local: the point is unit times theta's point +
+  // D.origin, and the offset d is a world length (d / unit locally).
+  const double dl = d / D.unit;
+  const Vec3d off = (-Hv.head<3>() * ner + dl * Nv.head<3>() * hinf) / (hinf * ner);
+  const Vec3d local = (P.point - D.origin) / D.unit;
   const double S = 1 + local.norm();
   RC_ASSERT((n - P.normal).norm() <= kRationalTol * S);
   RC_ASSERT((off - local).norm() <= kRationalTol * S);
-  RC_ASSERT((c + d * n - local).norm() <= kRationalTol * S);
+  RC_ASSERT((c + dl * n - local).norm() <= kRationalTol * S);
   // PN: |N_123|^2 - N_r^2 = 0 coefficientwise (bidegree (4, 4)).
   double coeff[5][5] = {}, big = 0;
   for (int i = 0; i < 3; ++i)

@@ -209,6 +209,7 @@ int check_theta(const Matrix6d& theta, char* why, size_t n) {
 Outcome dupin_in(const char* fn, const char* prefix, const cyc_dupin* c, DupinCyclide& D) {
   TRY(check_doubles(fn, FieldName(prefix, "theta"), c->theta, 36));
   TRY(check_doubles(fn, FieldName(prefix, "origin"), c->origin, 3));
+  TRY(check_positive(fn, FieldName(prefix, "unit"), c->unit));
   const Matrix6d theta = from_row_major(c->theta);
   char why[256];
   if (const int st = check_theta(theta, why, sizeof why); st != CYC_OK)
@@ -222,6 +223,7 @@ Outcome dupin_in(const char* fn, const char* prefix, const cyc_dupin* c, DupinCy
   E.theta = theta;
   E.type = dupin_laguerre_type(E);
   E.origin = vec(c->origin);
+  E.unit = c->unit;
   if (int(E.type) != c->type)
     return fail(CYC_E_INVALID_ARGUMENT, "%s: %stype = %d, but %stheta's Laguerre class is %d",
                 fn, prefix, c->type, prefix, int(E.type));
@@ -234,13 +236,14 @@ Outcome dupin_out(const char* fn, const DupinCyclide& D, cyc_dupin* out) {
   char why[256];
   if (check_theta(D.theta, why, sizeof why) != CYC_OK)
     return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result is ill-conditioned: %s", fn, why);
-  if (!D.origin.allFinite())
-    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result's origin is not finite", fn);
+  if (!D.origin.allFinite() || !(D.unit > 0) || !std::isfinite(D.unit))
+    return fail(CYC_E_NUMERICAL_OVERFLOW, "%s: the result's origin or unit is not finite", fn);
   cyc_dupin c;
   std::memset(&c, 0, sizeof c);  // no stray padding bytes
   to_row_major(D.theta, c.theta);
   c.type = int(dupin_laguerre_type(D));
   put3(c.origin, D.origin);
+  c.unit = D.unit;
   *out = c;
   return ok();
 }

@@ -22,10 +22,13 @@
 // the origin carry the scale that decodes them, (6), with an absolute error
 // eps D^2: a cyclide built and stored in global coordinates loses about
 // eps D^4 (a torus moved by 100: 9e-10; from D ~ 430 the Witt step failed
-// with not_isometric). theta is therefore stored in local coordinates
-// x - origin: the cyclide is theta's cyclide translated by +origin. The
-// builders pick the origin at the inputs' centre, and every function below
-// that returns points, planes or Lie spheres returns them globally.
+// with not_isometric). The same holds for the size L of the model in the
+// unit length (the terms are L^2 / unit^2 against 1). theta is therefore
+// stored in local coordinates (x - origin) / unit: the cyclide is theta's
+// cyclide scaled by unit and translated by +origin. The builders pick the
+// frame at the inputs (best_frame: an origin at their centres, a power of 2
+// near their size), and every function below that returns points, planes
+// or Lie spheres returns them globally.
 #pragma once
 
 #include "cyclide/circle_family.hpp"
@@ -56,9 +59,15 @@ struct DupinCyclide {
   // theta(er); A = span of columns 0, 1, 4; A^perp of 2, 3, 5.
   Matrix6d theta = Matrix6d::Identity();
   DupinLaguerreType type = DupinLaguerreType::quartic;
-  // The cyclide is theta's cyclide translated by +origin (theta, and the
-  // vectors sphere_xi / sphere_zeta below, are in local coordinates).
+  // The cyclide is theta's cyclide scaled by unit and translated by
+  // +origin: a world point x is x = unit * x_local + origin (theta, and the
+  // vectors sphere_xi / sphere_zeta below, are in local coordinates). The
+  // builders choose a power of 2 near the model's size as the unit, so that
+  // theta stays balanced: a Lie scaling by L folded into theta puts ~L and
+  // ~1/L into the same coordinates x_+- = a +- b, which keeps b only to
+  // eps L^2 (10^-9 of the model at L = 2^12, nothing at 2^27).
   Vec3d origin = Vec3d::Zero();
+  double unit = 1;
 
   // (29): the sphere a(xi) of the first family, in local coordinates.
   template <class S>
@@ -180,8 +189,8 @@ struct DupinPoint {
   Vec3d d_xi = Vec3d::Zero(), d_zeta = Vec3d::Zero();
 };
 
-// Global coordinates: point + origin, lambda + n . origin (normal and
-// partials are translation invariant). Affine parameters (both finite). point_at_infinity when c^ . n_inf
+// Global coordinates: unit point + origin, unit lambda + n . origin, the
+// partials times unit (the normal is invariant). Affine parameters (both finite). point_at_infinity when c^ . n_inf
 // vanishes relative to |c^| (kDupinInfinityTol), not_finite for NaN/Inf
 // input, numerical_overflow if an output is not finite.
 constexpr double kDupinInfinityTol = 1e-13;
@@ -193,13 +202,14 @@ Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
                               HomogeneousParameter zeta, double offset, DupinPoint& out);
 
 // The spheres of the two families as global Lie spheres (a(xi) may be a
-// plane or a point; centre + origin, plane lambda + n . origin).
+// plane or a point; unit centre + origin, unit radius, plane unit lambda +
+// n . origin).
 Status dupin_sphere_xi(const DupinCyclide& D, HomogeneousParameter xi, LieSphere& out);
 Status dupin_sphere_zeta(const DupinCyclide& D, HomogeneousParameter zeta, LieSphere& out);
 
 // The offset cyclide at distance d: theta composed with the Laguerre
-// dilatation rho -> rho + d (its points are c + d n); the origin is kept
-// (translations and dilatations commute).
+// dilatation rho -> rho + d / unit in the local frame (its points are c + d
+// n); origin and unit are kept (translations and dilatations commute).
 DupinCyclide dupin_offset(const DupinCyclide& D, double d);
 
 // ------------------------------------------- the circle-family view
@@ -271,12 +281,16 @@ Status dupin_frame(const DupinView& V, const S& u, CircleFrame<S>& F) {
     f[i] = axis.dot(d.cross(e)) / den;
   }
   // f(zeta) = alpha_f zeta + beta_f, zeta = (P v + Q) / (R v + T).
-  const S alpha_f = f[1] - f[0], beta_f = f[0];
-  const double* zm = V.zeta_map;
+  // World coordinates: x = unit x_local + origin. The axis is a product of
+  // two chords (unit^2) and so is f (R^2 - d . e is, and a . (d x e) is
+  // unit^4): tan(theta / 2) = |a| / f keeps its value.
   const Vec3d& g = V.cyclide.origin;
-  F.o = o + Vec3<S>(S(g[0]), S(g[1]), S(g[2]));
-  F.a = axis;
-  F.p = X[0] + Vec3<S>(S(g[0]), S(g[1]), S(g[2]));
+  const S unit(V.cyclide.unit), unit2(V.cyclide.unit * V.cyclide.unit);
+  const S alpha_f = unit2 * (f[1] - f[0]), beta_f = unit2 * f[0];
+  const double* zm = V.zeta_map;
+  F.o = unit * o + Vec3<S>(S(g[0]), S(g[1]), S(g[2]));
+  F.a = unit2 * axis;
+  F.p = unit * X[0] + Vec3<S>(S(g[0]), S(g[1]), S(g[2]));
   F.alpha = alpha_f * S(zm[0]) + beta_f * S(zm[2]);
   F.beta = alpha_f * S(zm[1]) + beta_f * S(zm[3]);
   F.gamma = S(zm[2]);

@@ -300,14 +300,15 @@ Status cone_from_surface(const Surface& S, double u, int direction, int orientat
     const Taylor<double, 1> w = dot_n_infinity(a);
     if (!(std::abs(w.c[0]) > 1e-12 * std::abs(a[kER].c[0]) + 1e-300))
       return Status::unsupported;  // the family's sphere is a plane here
+    const double unit = S.dupin.cyclide.unit;  // world = unit local + origin
     for (int i = 0; i < 3; ++i) {
       const Taylor<double, 1> x = -a[i] / w;  // (6): m = -a_123 / (a . n_inf)
-      m[i] = x.c[0] + S.dupin.cyclide.origin[i];  // global centre
-      dm[i] = x.c[1];
+      m[i] = unit * x.c[0] + S.dupin.cyclide.origin[i];  // global centre
+      dm[i] = unit * x.c[1];
     }
     const Taylor<double, 1> r = -a[kER] / w;
-    rho = r.c[0];
-    drho = r.c[1];
+    rho = unit * r.c[0];
+    drho = unit * r.c[1];
   } else {
     return Status::not_canal;
   }

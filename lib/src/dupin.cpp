@@ -81,6 +81,17 @@ LieSphere in_frame(const LieSphere& s, const Frame& F) {
   return r;
 }
 
+// The inverse of in_frame: a local sphere back in world coordinates.
+LieSphere out_of_frame(const LieSphere& s, const Frame& F) {
+  LieSphere r = s;
+  if (has_centre(r)) {
+    r.m *= F.unit;
+    r.rho *= F.unit;
+  }
+  if (r.kind == LieSphereKind::plane) r.lambda *= F.unit;
+  return translated(r, F.origin);
+}
+
 // The Lie map of the frame change x -> (x - o) / unit (translation, then
 // scaling: a Laguerre and Mobius map), for vectors that are no Lie sphere.
 Matrix6d frame_map(const Frame& F) {
@@ -202,15 +213,12 @@ Status to_local_frame(const Lie6d* a, int k, Lie6d* local, Frame& frame) {
   return Status::ok;
 }
 
-// The stored cyclide of a build in frame F: theta (local to F) scaled back
-// by the unit (the Lie scaling, exact for a power of 2 up to the products'
-// rounding), origin = F.origin.
+// The stored cyclide of a build in frame F: theta stays local to F (the
+// Laguerre class is that of theta: similarities keep it), origin and unit
+// are F's.
 void from_frame(const Frame& F, DupinCyclide& D) {
-  if (F.unit != 1) {
-    D.theta = lie_scaling(F.unit).M * D.theta;
-    D.type = dupin_laguerre_type(D);
-  }
   D.origin = F.origin;
+  D.unit = F.unit;
 }
 
 }  // namespace
@@ -531,16 +539,19 @@ Status point_and_normal(const Lie6d& H, const Lie6d& N, double L, Vec3d& c, doub
   return Status::ok;
 }
 
-// The point in global coordinates: c + d n + origin, and the tangent plane
-// x . n = lambda + n . origin (normals and partials are translation invariant).
-Status write_point(const Vec3d& origin, const Vec3d& c, const Vec3d& n, double lambda,
-                   double offset, const Vec3d& dxi, const Vec3d& dzeta, DupinPoint& out) {
+// The point in global coordinates from the local c, n, lambda and the
+// local partials of c and n: unit c + d n + origin, the tangent plane x . n
+// = unit lambda + n . origin, x_xi = unit c_xi + d n_xi (the normal is
+// invariant; d is a world length).
+Status write_point(const DupinCyclide& D, const Vec3d& c, const Vec3d& n, double lambda,
+                   double offset, const Vec3d& c_xi, const Vec3d& n_xi, const Vec3d& c_zeta,
+                   const Vec3d& n_zeta, DupinPoint& out) {
   DupinPoint P;
-  P.point = (c + offset * n) + origin;
+  P.point = (D.unit * c + offset * n) + D.origin;
   P.normal = n;
-  P.lambda = lambda + n.dot(origin);
-  P.d_xi = dxi;
-  P.d_zeta = dzeta;
+  P.lambda = D.unit * lambda + n.dot(D.origin);
+  P.d_xi = D.unit * c_xi + offset * n_xi;
+  P.d_zeta = D.unit * c_zeta + offset * n_zeta;
   if (!P.point.allFinite() || !P.normal.allFinite() || !std::isfinite(P.lambda) ||
       !P.d_xi.allFinite() || !P.d_zeta.allFinite())
     return Status::numerical_overflow;
@@ -576,9 +587,8 @@ Status dupin_eval(const DupinCyclide& D, double xi, double zeta, double offset,
     return Vec3d((Hd.head<3>() + c * weight_derivative(H, -w, Hd)) / w);
   };
   auto dnormal = [&](const Lie6d& Nd) { return Vec3d((Nd.head<3>() - n * dot_e_r(Nd)) / s); };
-  const Vec3d dxi = dpoint(Hx) + offset * dnormal(Nx);
-  const Vec3d dzeta = dpoint(Hz) + offset * dnormal(Nz);
-  return write_point(D.origin, c, n, lambda, offset, dxi, dzeta, out);
+  return write_point(D, c, n, lambda, offset, dpoint(Hx), dnormal(Nx), dpoint(Hz), dnormal(Nz),
+                     out);
 }
 
 Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
@@ -600,7 +610,8 @@ Status dupin_eval_homogeneous(const DupinCyclide& D, HomogeneousParameter xi,
                                    theta_size(D.theta), c, w, n, lambda, s);
       st != Status::ok)
     return st;
-  return write_point(D.origin, c, n, lambda, offset, Vec3d::Zero(), Vec3d::Zero(), out);
+  const Vec3d zero = Vec3d::Zero();
+  return write_point(D, c, n, lambda, offset, zero, zero, zero, zero, out);
 }
 
 namespace {
@@ -619,7 +630,7 @@ Status scaled(HomogeneousParameter t, double& p0, double& p1) {
 Status global_sphere(const DupinCyclide& D, const Lie6d& x, LieSphere& out) {
   LieSphere s;
   if (Status st = lie_sphere(x, s); st != Status::ok) return st;
-  const LieSphere g = translated(s, D.origin);
+  const LieSphere g = out_of_frame(s, Frame{D.origin, D.unit});
   if (!g.m.allFinite() || !std::isfinite(g.lambda)) return Status::numerical_overflow;
   out = g;
   return Status::ok;
@@ -640,7 +651,7 @@ Status dupin_sphere_zeta(const DupinCyclide& D, HomogeneousParameter zeta, LieSp
 
 DupinCyclide dupin_offset(const DupinCyclide& D, double d) {
   DupinCyclide O = D;
-  O.theta = lie_dilatation(d).M * D.theta;
+  O.theta = lie_dilatation(d / D.unit).M * D.theta;
   O.type = dupin_laguerre_type(O);
   return O;
 }

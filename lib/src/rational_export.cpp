@@ -232,7 +232,7 @@ void closed_form(const Surface& S, double ua, double ub, Real (&H)[3][4][3]) {
   // (29), (30): a = theta(2 x0 x1 e1 + (x1^2 - x0^2) e2 + (x1^2 + x0^2) e-),
   // b = theta(2 z0 z1 e3 + (z1^2 - z0^2) e+ + (z1^2 + z0^2) er), quadratics
   // in t and in v; (25) c^ = (er . a) b - (er . b) a (er . x = -x_r), and
-  // (26)-(27) x = c^_123 / w + origin, w = -c^ . n_inf = c^_- - c^_+.
+  // (26)-(27) x = unit c^_123 / w + origin, w = -c^ . n_inf = c^_- - c^_+.
   const DupinCyclide& D = S.dupin.cyclide;
   const double* xm = S.dupin.xi_map;
   const double* zm = S.dupin.zeta_map;
@@ -257,7 +257,7 @@ void closed_form(const Surface& S, double ua, double ub, Real (&H)[3][4][3]) {
       for (int row = 0; row < 6; ++row) c[row] = B[kER][k] * A[row][i] - A[kER][i] * B[row][k];
       const Real w = c[kEMinus] - c[kEPlus];
       H[k][0][i] = w;
-      for (int r = 0; r < 3; ++r) H[k][1 + r][i] = c[r] + Real(D.origin[r]) * w;
+      for (int r = 0; r < 3; ++r) H[k][1 + r][i] = Real(D.unit) * c[r] + Real(D.origin[r]) * w;
     }
 }
 

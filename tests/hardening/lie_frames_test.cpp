@@ -145,4 +145,49 @@ TEST_F(LieFrames, TorusAtEveryScaleAndFarAway) {
     }
 }
 
+// A generic cyclide built at scale 2^k is the scaled cyclide bit for bit:
+// the best frame's origin and unit scale with the inputs (exact for a
+// power of 2), so theta is the same matrix and every point, radius and
+// partial is 2^k times the unit-scale one. (theta once carried the Lie
+// scaling by the unit, which keeps the n0 parts only to eps 2^{2|k|}.)
+TEST_F(LieFrames, GenericCyclideScalesExactlyWithItsSpheres) {
+  const cyc_lie_sphere base[3] = {sphere(1.25, -0.5, 0.75, 0.625), sphere(-0.875, 1.5, 0.25, -1.125),
+                                  sphere(0.5, 0.375, -1.75, 0.8125)};
+  cyc_dupin D0;
+  ASSERT_EQ(cyc_dupin_from_spheres(ctx, base, &D0), CYC_OK) << cyc_context_last_error(ctx);
+  for (int k : {-30, -12, -5, 5, 12, 30}) {
+    const double s = std::ldexp(1.0, k);
+    cyc_lie_sphere sp[3];
+    for (int i = 0; i < 3; ++i) {
+      sp[i] = base[i];
+      for (double& m : sp[i].m) m *= s;
+      sp[i].rho *= s;
+    }
+    cyc_dupin D;
+    ASSERT_EQ(cyc_dupin_from_spheres(ctx, sp, &D), CYC_OK) << "k = " << k;
+    EXPECT_EQ(D.type, D0.type) << "k = " << k;
+    EXPECT_EQ(D.unit, s * D0.unit) << "k = " << k;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(D.origin[c], s * D0.origin[c]) << "k = " << k;
+    for (int c = 0; c < 36; ++c) ASSERT_EQ(D.theta[c], D0.theta[c]) << "k = " << k << ", " << c;
+    for (double xi : {-2.0, 0.5, 3.0})
+      for (double zeta : {-1.0, 0.7, 2.0}) {
+        cyc_dupin_point P0, P;
+        if (cyc_dupin_eval(ctx, &D0, xi, zeta, 0.25, &P0) != CYC_OK) continue;
+        ASSERT_EQ(cyc_dupin_eval(ctx, &D, xi, zeta, 0.25 * s, &P), CYC_OK) << "k = " << k;
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_EQ(P.point[c], s * P0.point[c]) << "k = " << k;
+          EXPECT_EQ(P.normal[c], P0.normal[c]) << "k = " << k;
+          EXPECT_EQ(P.d_xi[c], s * P0.d_xi[c]) << "k = " << k;
+        }
+        EXPECT_EQ(P.lambda, s * P0.lambda) << "k = " << k;
+      }
+    const double t[2] = {0.5, 1};
+    cyc_lie_sphere a0, a;
+    ASSERT_EQ(cyc_dupin_sphere(ctx, &D0, 0, t, &a0), CYC_OK);
+    ASSERT_EQ(cyc_dupin_sphere(ctx, &D, 0, t, &a), CYC_OK);
+    EXPECT_EQ(a.rho, s * a0.rho) << "k = " << k;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a.m[c], s * a0.m[c]) << "k = " << k;
+  }
+}
+
 }  // namespace

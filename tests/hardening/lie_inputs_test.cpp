@@ -364,6 +364,14 @@ TEST_F(LieInputs, VectorsAndTransformsAreCheckedPerEntry) {
 }
 
 TEST_F(LieInputs, DupinValuesAndEvaluationArgumentsAreCheckedAndNamed) {
+  for (double unit : {0.0, -0.0, -1.0}) {  // the unit must be positive
+    cyc_dupin E = D;
+    E.unit = unit;
+    cyc_dupin_point P;
+    poison(P);
+    expect(cyc_dupin_eval(ctx, &E, 0.5, 0.5, 0, &P), CYC_E_INVALID_ARGUMENT, "cyc_dupin_eval",
+           {"cyclide.unit", "is not positive"});
+  }
   for (double bad : kBadDoubles) {
     cyc_dupin E = D;
     E.origin[1] = bad;
@@ -375,6 +383,10 @@ TEST_F(LieInputs, DupinValuesAndEvaluationArgumentsAreCheckedAndNamed) {
     E.theta[5] = bad;
     expect(cyc_dupin_eval(ctx, &E, 0.5, 0.5, 0, &P), CYC_E_NOT_FINITE, "cyc_dupin_eval",
            {"cyclide.theta[5]"});
+    cyc_dupin U = D;
+    U.unit = bad;
+    expect(cyc_dupin_eval(ctx, &U, 0.5, 0.5, 0, &P), CYC_E_NOT_FINITE, "cyc_dupin_eval",
+           {"cyclide.unit"});
     expect(cyc_dupin_eval(ctx, &D, bad, 0.5, 0, &P), CYC_E_NOT_FINITE, "cyc_dupin_eval",
            {"xi = "});
     expect(cyc_dupin_eval(ctx, &D, 0.5, bad, 0, &P), CYC_E_NOT_FINITE, "cyc_dupin_eval",

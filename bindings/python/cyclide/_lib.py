@@ -175,7 +175,8 @@ class cyc_lie_sphere(Structure):
 
 
 class cyc_dupin(Structure):
-    _fields_ = [("theta", _arr(c_double, 36)), ("type", c_int), ("origin", _arr(c_double, 3))]
+    _fields_ = [("theta", _arr(c_double, 36)), ("type", c_int), ("origin", _arr(c_double, 3)),
+                ("unit", c_double)]
 
 
 class cyc_dupin_point(Structure):

@@ -1706,20 +1706,23 @@ CYC_API int cyc_lie_transform_classify(cyc_context* ctx, const cyc_lie_transform
 #define CYC_DUPIN_QUARTIC 3    /* III: quartic (e.g. a torus) */
 
 /** A Dupin cyclide (frozen): theta ROW-MAJOR (column j is theta(e_j)), its
- *  Laguerre class, and its local origin: the cyclide is theta's cyclide
- *  translated by +origin (theta acts on local coordinates x - origin, so
- *  that the n_inf-type coordinates of its spheres stay of the size of the
- *  cyclide, not of |origin|^2; SPEC.md sec. 8h.3). The builders choose the
- *  origin; points, planes and spheres this API returns are global. A value,
- *  validated by every function taking it: finite (theta and origin),
- *  theta in O(4,2) (max |theta^T J theta - J| <= 1e-8 max(1,
- *  max|theta|^2)) and type the class of theta; else CYC_E_INVALID_ARGUMENT
- *  (CYC_E_NOT_FINITE for NaN/Inf). Every cyc_dupin this API returns
- *  passes that check. origin = {0, 0, 0} is theta's cyclide itself. */
+ *  Laguerre class, and its local frame: the cyclide is theta's cyclide
+ *  scaled by unit and translated by +origin (theta acts on local
+ *  coordinates (x - origin) / unit, so that the coordinates of its spheres
+ *  in (4) stay of size ~1, not |origin|^2 or the model's size^+-2; SPEC.md
+ *  sec. 8h.3). The builders choose the frame (unit a power of 2 near the
+ *  model's size); points, planes, spheres and partials this API returns
+ *  are global. A value, validated by every function taking it: finite
+ *  (theta, origin, unit), unit > 0, theta in O(4,2) (max |theta^T J theta
+ *  - J| <= 1e-8 max(1, max|theta|^2)) and type the class of theta; else
+ *  CYC_E_INVALID_ARGUMENT (CYC_E_NOT_FINITE for NaN/Inf). Every cyc_dupin
+ *  this API returns passes that check. origin = {0, 0, 0} and unit = 1 is
+ *  theta's cyclide itself. */
 typedef struct cyc_dupin {
   double theta[36];
   int type;         /* CYC_DUPIN_DEGENERATE .. CYC_DUPIN_QUARTIC */
   double origin[3]; /* the translation of theta's cyclide */
+  double unit;      /* the length unit of theta's cyclide (> 0) */
 } cyc_dupin;
 
 /** A point of a Dupin cyclide or of its offset (frozen): point = c + d n,
@@ -1794,7 +1797,10 @@ CYC_API int cyc_dupin_sphere(cyc_context* ctx, const cyc_dupin* cyclide, int fam
  *  j) of points / normals (either may be NULL). Every point is computed
  *  and checked before anything is written; any failure (e.g. one point at
  *  infinity) fails the whole grid with that point's status and writes
- *  nothing. nxi or nzeta = 0 is CYC_OK with nothing written;
+ *  nothing. Every parameter and the offset are checked before any point
+ *  (CYC_E_NOT_FINITE: NaN, Inf or beyond 1e100). nxi or nzeta = 0 (and
+ *  finite parameters) is
+ *  CYC_OK with nothing written;
  *  CYC_E_INVALID_ARGUMENT when nxi * nzeta * 3 overflows size_t. */
 CYC_API int cyc_dupin_eval_grid(cyc_context* ctx, const cyc_dupin* cyclide, const double* xis,
                                 size_t nxi, const double* zetas, size_t nzeta, double offset,

@@ -639,6 +639,7 @@ pub struct cyc_dupin {
     pub theta: [f64; 36],
     pub r#type: c_int,
     pub origin: [f64; 3],
+    pub unit: f64,
 }
 #[repr(C)]
 #[derive(Debug, Copy, Clone)]

@@ -319,6 +319,7 @@ int main(void) {
   F(cyc_dupin, theta);
   F(cyc_dupin, type);
   F(cyc_dupin, origin);
+  F(cyc_dupin, unit);
   S(cyc_dupin_point);
   F(cyc_dupin_point, point);
   F(cyc_dupin_point, normal);

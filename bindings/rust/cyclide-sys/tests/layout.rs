@@ -439,7 +439,8 @@ fn struct_layouts_and_constants_match_the_c_header() {
     check!(cyc_dupin {
         theta,
         r#type,
-        origin
+        origin,
+        unit
     });
     check!(cyc_dupin_point {
         point,
