@@ -1,5 +1,6 @@
 // Seed 003 §4, Case II (labels optim;lie): Ceres chooses the double cyclide
-// blend's family parameter phi = atan(alpha) on the hyperbolas (43) against
+// blend's family parameter phi = atan(unit alpha) on the hyperbolas (43)
+// (unit = cyclide_blend_unit, the frame's power of 2) against
 // a user objective — evenly curved patches, a joint circle through given
 // points or of a given radius, clearance from spheres — never worse than
 // the best scanned sample and always a valid, G1 blend.
@@ -140,7 +141,9 @@ TEST(CyclideBlendOptimizer, FairestDoubleBlendIsALocalMinimum) {
   EXPECT_EQ(p.index, -1);
   EXPECT_LE(p.lower, p.value);
   EXPECT_LE(p.value, p.upper);
-  EXPECT_NEAR(std::tan(p.value), B.alpha, 1e-12 * (1 + std::abs(B.alpha)));
+  double unit = 0;
+  ASSERT_EQ(cyclide_blend_unit(R, S, unit), Status::ok);
+  EXPECT_NEAR(std::tan(p.value) / unit, B.alpha, 1e-12 * (1 + std::abs(B.alpha)));
   expect_g1(R, S, B, 1e-9);
   double c0 = 0, f0 = 0;
   ASSERT_TRUE(default_cost(R, S, B, c0));
@@ -151,7 +154,7 @@ TEST(CyclideBlendOptimizer, FairestDoubleBlendIsALocalMinimum) {
   for (double d : {-1e-3, 1e-3}) {
     CyclideBlend N;
     if (p.value + d < p.lower || p.value + d > p.upper) continue;
-    if (cyclide_blend(R, S, -1, std::tan(p.value + d), N) != Status::ok) continue;
+    if (cyclide_blend(R, S, -1, std::tan(p.value + d) / unit, N) != Status::ok) continue;
     double c = 0;
     ASSERT_TRUE(default_cost(R, S, N, c));
     EXPECT_GE(c, sum.final_cost - 1e-12) << "phi + " << d;
@@ -379,10 +382,12 @@ RC_GTEST_PROP(CyclideBlendOptimizerProperties, OptimizedDoubleBlendsAreValidAndM
   RC_ASSERT(default_cost(R, S, B, c0));
   RC_ASSERT(std::abs(c0 - sum.final_cost) <= 1e-12 * (1 + c0));
   if (sum.termination != BlendTermination::converged) return;
+  double unit = 0;
+  RC_ASSERT(cyclide_blend_unit(R, S, unit) == Status::ok);
   for (double dp : {-1e-3, 1e-3}) {
     if (p.value + dp < p.lower || p.value + dp > p.upper) continue;
     CyclideBlend N;
-    if (cyclide_blend(R, S, B.branch, std::tan(p.value + dp), N) != Status::ok) continue;
+    if (cyclide_blend(R, S, B.branch, std::tan(p.value + dp) / unit, N) != Status::ok) continue;
     double c = 0;
     if (!default_cost(R, S, N, c)) continue;
     RC_ASSERT(c >= sum.final_cost - 1e-9 * (1 + sum.final_cost));

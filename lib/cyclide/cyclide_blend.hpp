@@ -133,8 +133,17 @@ struct BlendCircle {
 Status cyclide_blend_circle(const CyclideBlend& B, int piece, int family, double s,
                             BlendCircle& out);
 
+// The unit of the blend's frame: the power of 2 nearest to the cones' size
+// (their circle centres' distance from their midpoint and the generating
+// spheres' radii). alpha' = unit alpha is the scale-free family parameter:
+// the cones of a model scaled by a power of 2 have the same blends at the
+// same alpha' (alpha' . r0' + r+' in the frame, SPEC §8h.11).
+Status cyclide_blend_unit(const LieCone& R, const LieCone& S, double& unit);
+
 // Algorithm 2 with its free parameter chosen: Case I as above; Case II
-// scans phi in (-pi/2, pi/2), alpha = tan(phi), at `samples` points on both
+// scans phi in (-pi/2, pi/2), alpha = tan(phi) / unit (unit: the power of 2
+// nearest to the cones' size, common_frame; so that the scan samples the
+// same blends of the model at every scale), at `samples` points on both
 // branches (45's asymptote and failing points skipped), keeps the blend whose
 // circles vary least (quality = min radius / max radius over 17 circles of
 // the first family and 16 of the second per piece: both principal

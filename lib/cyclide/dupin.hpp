@@ -112,6 +112,13 @@ Vec3<S> euclidean_point(const Lie6<S>& c) {
 
 // ------------------------------------------------------------ construction
 
+// The nearest power of 2 to x > 0 (1 for 0 or non-finite x): a frame's
+// unit, so that scaling by it is exact.
+inline double nearest_power_of_two(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return 1;
+  return std::ldexp(1.0, int(std::lround(std::log2(x))));
+}
+
 // Case analysis of §3.1 for three Lie spheres (representatives, any scale):
 // ok for a cyclide (A = R^{2,1}, i.e. (a1.a2)(a1.a3)(a2.a3) < 0);
 // sphere_pencil (dim A = 2, Case I), no_touching_sphere (A = R^{1,2}),

@@ -87,7 +87,7 @@ struct BlendOptions {
 // points' circle parameters of the canal and ringed blends (seed 000 §9,
 // below) and the directrix bump w, tau of the
 // P-curve blend (seed 001 §5, bump_optimizer.hpp), and the family
-// parameter phi = atan(alpha) of the double cyclide blend of two cones
+// parameter phi = atan(unit alpha) of the double cyclide blend of two cones
 // (seed 003 §4, cyclide_blend_optimizer.hpp). (The reparameterization
 // factors mu are not free parameters of any blend built here: mu is fixed by
 // the Hermite data's jets — those are the jet parameters.)
@@ -96,7 +96,7 @@ enum class ParameterRole : int {
   bump_displacement = 1,  // w_index (index 0, 1, 2) of d* = d + w b(t; tau)
   bump_position = 2,      // tau
   circle_point = 3,       // theta = 2 atan v of point `order` (j) at end `index`
-  family = 4,             // phi = atan(alpha) of a double cyclide blend on branch `index` (+-1)
+  family = 4,             // phi = atan(unit alpha) of a double cyclide blend on branch `index` (+-1)
 };
 struct FreeParameter {
   ParameterRole role = ParameterRole::jet;

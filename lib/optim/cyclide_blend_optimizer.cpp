@@ -134,16 +134,25 @@ class Residuals {
 
 // The residuals of the blend at phi on a fixed branch (false: no valid
 // blend there).
+// phi = atan(unit alpha), unit = cyclide_blend_unit (scale-free).
 struct FamilyCost {
   LieCone R, S;
   int branch;
   const Residuals* residuals;
+  double unit = 1;
   bool operator()(const double* phi, double* r) const {
     CyclideBlend B;
-    if (cyclide_blend(R, S, branch, std::tan(phi[0]), B) != Status::ok) return false;
+    if (cyclide_blend(R, S, branch, std::tan(phi[0]) / unit, B) != Status::ok) return false;
     return residuals->of_blend(B, r);
   }
 };
+
+FamilyCost family_cost(const LieCone& R, const LieCone& S, int branch, const Residuals* res) {
+  FamilyCost f{R, S, branch, res};
+  double unit = 1;
+  if (cyclide_blend_unit(R, S, unit) == Status::ok) f.unit = unit;
+  return f;
+}
 
 // Ceres' view of FamilyCost with the derivative by central differences,
 // one-sided where one probe has no valid blend (near the end of a valid
@@ -220,7 +229,7 @@ Status length_scale(const LieCone& R, const LieCone& S, double& L) {
 double cost_at(const FamilyCost& f, double phi, std::vector<double>& r, CyclideBlend* keep,
                Status* status) {
   CyclideBlend B;
-  const Status st = cyclide_blend(f.R, f.S, f.branch, std::tan(phi), B);
+  const Status st = cyclide_blend(f.R, f.S, f.branch, std::tan(phi) / f.unit, B);
   if (status) *status = st;
   if (st != Status::ok || !f.residuals->of_blend(B, r.data())) return HUGE_VAL;
   double c = 0;
@@ -251,7 +260,7 @@ Status scan(const LieCone& R, const LieCone& S, const Residuals& res,
   std::vector<double> best_costs;
   for (int branch : {1, -1}) {
     if (p.branch != 0 && branch != p.branch) continue;
-    FamilyCost f{R, S, branch, &res};
+    const FamilyCost f = family_cost(R, S, branch, &res);
     for (int k = 0; k < n; ++k) {
       Status st = Status::ok;
       CyclideBlend B;
@@ -346,7 +355,7 @@ Status optimize_cyclide_blend(const LieCone& R, const LieCone& S,
   // exact construction; a phi without a valid blend rejects the step).
   double phi = s.start;
   ceres::Problem problem;
-  problem.AddResidualBlock(new FamilyCostFunction(FamilyCost{R, S, s.branch, &res}), nullptr,
+  problem.AddResidualBlock(new FamilyCostFunction(family_cost(R, S, s.branch, &res)), nullptr,
                            &phi);
   problem.SetParameterLowerBound(&phi, 0, s.lower);
   problem.SetParameterUpperBound(&phi, 0, s.upper);
@@ -370,7 +379,7 @@ Status optimize_cyclide_blend(const LieCone& R, const LieCone& S,
                         ? BlendTermination::iteration_limit
                         : BlendTermination::converged;
   // The result, rebuilt; the best sample if it is no valid blend or worse.
-  const FamilyCost f{R, S, s.branch, &res};
+  const FamilyCost f = family_cost(R, S, s.branch, &res);
   std::vector<double> r(res.count());
   CyclideBlend B;
   double final_cost = cost_at(f, phi, r, &B, nullptr);

@@ -4,7 +4,8 @@
 // (SPEC.md §8h.12). Optimizer tier: allocates (Ceres); only in
 // libcyclide_optim.
 //
-// The unknown is phi = atan(alpha) on one branch (+1 or -1) of (43); the
+// The unknown is phi = atan(unit alpha) on one branch (+1 or -1) of (43)
+// (unit = cyclide_blend_unit, so that the scan is scale-free); the
 // objective is a weighted sum (1/2 the sum of squared residuals) of
 //   fairness   the spread of the log radii of the patches' circles
 //              (cyclide_blend_circle: `circles` of each family per piece;

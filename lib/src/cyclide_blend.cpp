@@ -366,15 +366,23 @@ Status cone_surface(const LieCone& R, double h0, double h1, Surface& out) {
 }
 
 namespace {
-// The blend's local frame (SPEC §8h.3): origin = the midpoint of the two
-// cones' circle centres, and both cones moved by -origin through their
-// sphere families (read back exactly from (4)'s e1..e3 and er
-// coordinates, moved, and rebuilt by cone_from_spheres). Translation is a
-// Laguerre and a Mobius map: it fixes n_inf and er, so every Lie product,
-// side and pinch test of Algorithm 2 means the same in this frame, while
-// the products no longer cancel terms of size |m|^2.
+// The blend's local frame x' = (x - origin) / unit (SPEC §8h.3): origin =
+// the midpoint of the two cones' circle centres, unit = the power of 2
+// nearest to the model's size (the centres' distance from it and the
+// generating spheres' radii), and both cones moved through their sphere
+// families (read back exactly from (4)'s e1..e3 and er coordinates, moved
+// and scaled, and rebuilt by cone_from_spheres). Translation and scaling
+// are Laguerre and Mobius maps: every Lie product, side and pinch test of
+// Algorithm 2 means the same in this frame, while the products no longer
+// cancel terms of size |m|^2 or size^+-2. The family parameter becomes h'
+// = h / unit (dm and drho are kept), so the local cones of a model and of
+// the model scaled by a power of 2 are the same vectors: (4) of the local
+// family at h' is c S T x(unit h') (S, T the frame's Lie maps, c a
+// constant), so r0' ~ r0 and r+' ~ unit r+, and alpha r0 + r+ ~ alpha'
+// r0' + r+' for alpha' = unit alpha (likewise beta).
+
 Status common_frame(const LieCone& R0, const LieCone& S0, LieCone& R, LieCone& S,
-                    Vec3d& origin) {
+                    Vec3d& origin, double& unit) {
   ConeSpheres KR, KS;
   if (Status st = cone_spheres(R0, KR); st != Status::ok) return st;
   if (Status st = cone_spheres(S0, KS); st != Status::ok) return st;
@@ -383,11 +391,15 @@ Status common_frame(const LieCone& R0, const LieCone& S0, LieCone& R, LieCone& S
   };
   const Vec3d o = 0.5 * (centre(KR) + centre(KS));
   if (!o.allFinite()) return Status::numerical_overflow;
-  if (Status st = cone_from_spheres(KR.m - o, KR.rho, KR.dm, KR.drho, R); st != Status::ok)
-    return st;
-  if (Status st = cone_from_spheres(KS.m - o, KS.rho, KS.dm, KS.drho, S); st != Status::ok)
-    return st;
+  const double size = std::max({(centre(KR) - o).norm(), std::abs(KR.rho), std::abs(KS.rho)});
+  const double u = nearest_power_of_two(size);
+  auto moved = [&](const ConeSpheres& K, LieCone& out) {
+    return cone_from_spheres((K.m - o) / u, K.rho / u, K.dm, K.drho, out);
+  };
+  if (Status st = moved(KR, R); st != Status::ok) return st;
+  if (Status st = moved(KS, S); st != Status::ok) return st;
   origin = o;
+  unit = u;
   return Status::ok;
 }
 
@@ -480,7 +492,8 @@ Status blend_in_frame(const LieCone& R, const LieCone& S, int branch, double alp
 Status cyclide_blend_dimension(const LieCone& R0, const LieCone& S0, int& dim) {
   LieCone R, S;
   Vec3d origin;
-  if (Status st = common_frame(R0, S0, R, S, origin); st != Status::ok) return st;
+  double unit = 1;
+  if (Status st = common_frame(R0, S0, R, S, origin, unit); st != Status::ok) return st;
   return dimension_in_frame(R, S, dim);
 }
 
@@ -490,22 +503,33 @@ Status cyclide_blend_beta(const LieCone& R0, const LieCone& S0, int branch, doub
   if (!std::isfinite(alpha)) return Status::not_finite;
   LieCone R, S;
   Vec3d origin;
-  if (Status st = common_frame(R0, S0, R, S, origin); st != Status::ok) return st;
-  return beta_in_frame(R, S, branch, alpha, beta);
+  double unit = 1;
+  if (Status st = common_frame(R0, S0, R, S, origin, unit); st != Status::ok) return st;
+  double local_beta = 0;
+  if (Status st = beta_in_frame(R, S, branch, unit * alpha, local_beta); st != Status::ok)
+    return st;
+  beta = local_beta / unit;
+  return Status::ok;
 }
 
 Status cyclide_blend(const LieCone& R0, const LieCone& S0, int branch, double alpha,
                      CyclideBlend& out) {
   LieCone R, S;
   Vec3d origin;
-  if (Status st = common_frame(R0, S0, R, S, origin); st != Status::ok) return st;
+  double unit = 1;
+  if (Status st = common_frame(R0, S0, R, S, origin, unit); st != Status::ok) return st;
   CyclideBlend B;
-  if (Status st = blend_in_frame(R, S, branch, alpha, B); st != Status::ok) return st;
-  // Back to global coordinates: the pieces' origin, and the glued spheres
-  // and the joint by the Lie translation by +origin.
-  const Matrix6d T = lie_translation(origin).M;
+  if (Status st = blend_in_frame(R, S, branch, unit * alpha, B); st != Status::ok) return st;
+  if (B.pieces == 2) {  // the world's (alpha, beta)
+    B.alpha = alpha;
+    B.beta /= unit;
+  }
+  // Back to global coordinates: the pieces' frame, and the glued spheres
+  // and the joint by the Lie scaling by unit and translation by +origin.
+  const Matrix6d T = lie_translation(origin).M * lie_scaling(unit).M;
   for (int i = 0; i < B.pieces; ++i) {
     B.piece[i].cyclide.origin = origin;
+    B.piece[i].cyclide.unit = unit;
     B.piece[i].first = T * B.piece[i].first;
     B.piece[i].second = T * B.piece[i].second;
   }
@@ -645,6 +669,12 @@ bool cyclide_blend_pieces_build(const CyclideBlend& B) {
   return true;
 }
 
+Status cyclide_blend_unit(const LieCone& R0, const LieCone& S0, double& unit) {
+  LieCone R, S;
+  Vec3d origin;
+  return common_frame(R0, S0, R, S, origin, unit);
+}
+
 Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out, int samples,
                           double* quality) {
   if (samples < 8 || samples > 4096) return Status::invalid_argument;
@@ -661,6 +691,10 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
     out = B;
     return Status::ok;
   }
+  // alpha' = unit alpha = tan(phi) in the blend's frame (common_frame), so
+  // the search is the same for the model at every scale.
+  double unit = 1;
+  if (Status st = cyclide_blend_unit(R, S, unit); st != Status::ok) return st;
   const double half_pi = 2 * std::atan(1.0);
   auto phi_of = [&](int k) { return -half_pi + 2 * half_pi * (k + 0.5) / samples; };
   // The quality at phi on a branch, or -1 where no valid blend exists.
@@ -668,7 +702,7 @@ Status cyclide_blend_auto(const LieCone& R, const LieCone& S, CyclideBlend& out,
   // A quality above `bar` counts only if the pieces build as surfaces.
   auto score = [&](int branch, double phi, double bar, CyclideBlend* keep) {
     CyclideBlend B;
-    const Status st = cyclide_blend(R, S, branch, std::tan(phi), B);
+    const Status st = cyclide_blend(R, S, branch, std::tan(phi) / unit, B);
     folded |= st == Status::blend_folds;
     double q = -1;
     if (st != Status::ok || cyclide_blend_quality(B, q) != Status::ok) return -1.0;

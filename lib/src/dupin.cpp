@@ -98,11 +98,6 @@ Matrix6d frame_map(const Frame& F) {
   return lie_scaling(1 / F.unit).M * lie_translation(-F.origin).M;
 }
 
-// The nearest power of 2 to x > 0 (1 for 0 or non-finite x).
-double power_of_two(double x) {
-  if (!(x > 0) || !std::isfinite(x)) return 1;
-  return std::ldexp(1.0, int(std::lround(std::log2(x))));
-}
 
 // How well the frame represents vectors x_i for the form: s_max / s_min
 // (over the first `rank` singular values) of the unit-normalized vectors.
@@ -172,10 +167,10 @@ Frame best_frame(const Lie6d* a, const LieSphere* s, const bool* decoded, int k)
   for (int i = 0; i < count; ++i) origins[no++] = centres[i];
   double units[8];
   int nu = 0;
-  units[nu++] = power_of_two(spread);
+  units[nu++] = nearest_power_of_two(spread);
   for (int i = 0; i < count; ++i) {
     const double size = sizes[i] > 0 ? sizes[i] : (centres[i] - mean).norm();
-    units[nu++] = power_of_two(size);
+    units[nu++] = nearest_power_of_two(size);
   }
   // The rank is that of the best frame: in a poor one, vectors of spheres
   // far away in its unit are nearly parallel and lose rank to rounding.

@@ -190,4 +190,51 @@ TEST_F(LieFrames, GenericCyclideScalesExactlyWithItsSpheres) {
   }
 }
 
+// Algorithm 2 in a frame with a unit: two cones scaled by 2^k have the same
+// local blend (the pieces' theta bit for bit, their unit and origin
+// scaled), its alpha and beta scale by 2^-k (alpha multiplies r0 against
+// r+, a derivative in a length), and the quality is the same. Without the
+// unit the scan refused the scaled cones from 2^-5 on. (Larger cones are
+// not compared bit for bit: a cyc_lie_cone holds global Lie vectors, whose
+// weight carries eps |m|^2 (SPEC §8h.11); the similarity property covers
+// them to its tolerance.)
+TEST_F(LieFrames, CyclideBlendScalesExactlyWithItsCones) {
+  auto cones = [&](double s, cyc_lie_cone& R, cyc_lie_cone& S) {
+    const double c0[3] = {-3 * s, 0.1 * s, 0.2 * s}, c1[3] = {3 * s, 0.3 * s, -0.1 * s};
+    const double n0[3] = {0.8, 0.6, 0}, n1[3] = {-0.8, 0.6, 0};
+    ASSERT_EQ(cyc_cone_from_circle(ctx, c0, n0, 1.0 * s, 0.25, 1, &R), CYC_OK);
+    ASSERT_EQ(cyc_cone_from_circle(ctx, c1, n1, 1.5 * s, -0.25, 1, &S), CYC_OK);
+  };
+  cyc_lie_cone R0, S0;
+  cones(1, R0, S0);
+  cyc_cyclide_blend B0;
+  double q0 = 0;
+  ASSERT_EQ(cyc_cyclide_blend_auto(ctx, &R0, &S0, 8, &B0, &q0), CYC_OK)
+      << cyc_context_last_error(ctx);
+  ASSERT_EQ(B0.pieces, 2);
+  for (int k : {-30, -20, -10, -5, 5}) {
+    const double s = std::ldexp(1.0, k);
+    cyc_lie_cone R, S;
+    cones(s, R, S);
+    cyc_cyclide_blend B;
+    double q = 0;
+    ASSERT_EQ(cyc_cyclide_blend_auto(ctx, &R, &S, 8, &B, &q), CYC_OK)
+        << "k = " << k << ": " << cyc_context_last_error(ctx);
+    ASSERT_EQ(B.pieces, B0.pieces) << "k = " << k;
+    EXPECT_EQ(q, q0) << "k = " << k;
+    EXPECT_EQ(B.alpha, B0.alpha / s) << "k = " << k;
+    EXPECT_EQ(B.beta, B0.beta / s) << "k = " << k;
+    for (int i = 0; i < B.pieces; ++i) {
+      EXPECT_EQ(B.piece[i].unit, s * B0.piece[i].unit) << "k = " << k;
+      for (int c = 0; c < 36; ++c)
+        ASSERT_EQ(B.piece[i].theta[c], B0.piece[i].theta[c]) << "k = " << k << ", " << c;
+      double c[3], n[3], r = 0, cs[3], ns[3], rs = 0;
+      ASSERT_EQ(cyc_cyclide_blend_circle(ctx, &B0, i, 0, 0.5, c, n, &r), CYC_OK);
+      ASSERT_EQ(cyc_cyclide_blend_circle(ctx, &B, i, 0, 0.5, cs, ns, &rs), CYC_OK);
+      EXPECT_EQ(rs, s * r) << "k = " << k;
+      for (int j = 0; j < 3; ++j) EXPECT_EQ(cs[j], s * c[j]) << "k = " << k;
+    }
+  }
+}
+
 }  // namespace

@@ -256,9 +256,8 @@ RC_GTEST_PROP(LieSimilarity, CyclideBlendMovesWithItsCones, ()) {
   const double L = std::max(c0.norm() + r0, c1.norm() + r1);
   const Similarity g = *similarity::gen_similarity(L);
   RC_TAG(g.k);
-  // Global Lie vectors of cones (as above), and Algorithm 2's frame is
-  // translated but not scaled (SPEC §9b.4: other scales remain open).
-  RC_PRE(g.point_scale(L) <= 1e7 && g.k == 0);
+  // Global Lie vectors of cones (as above).
+  RC_PRE(g.point_scale(L) <= 1e7);
   Context C;
   cyc_lie_cone R, S;
   RC_ASSERT(cyc_cone_from_circle(C.ctx, c0.data(), n0.data(), r0, k0, 1, &R) == CYC_OK);
@@ -289,13 +288,24 @@ RC_GTEST_PROP(LieSimilarity, CyclideBlendMovesWithItsCones, ()) {
   // for double blends; a single blend has no free parameter.
   RC_ASSERT(qg > 0 && qg <= 1);
   if (B.pieces == 1) RC_ASSERT(std::abs(qg - q) <= kQualityTol);
-  // The glued circles (u = 0 of each piece) move with g.
+  // The glued circles (u = 0 of each piece) move with g. A piece near the
+  // asymptotes (45), (46) (|beta| ~ 1e4) meets its cone's circle only to
+  // its own accuracy (6.7e-9 of the model was seen), which both builds
+  // carry: that deviation, measured against each cone's circle, widens the
+  // tolerance (it must stay below 1e-6, the accuracy stated for such
+  // pieces in SPEC §8h.12).
   const double scale = g.point_scale(L);
   for (int i = 0; i < B.pieces; ++i) {
     double c[3], n[3], r = 0, cg[3], ng[3], rg = 0;
     RC_ASSERT(cyc_cyclide_blend_circle(C.ctx, &B, i, 0, 0.0, c, n, &r) == CYC_OK);
     RC_ASSERT(cyc_cyclide_blend_circle(C.ctx, &Bg, i, 0, 0.0, cg, ng, &rg) == CYC_OK);
-    RC_ASSERT((v3(cg) - g.point(v3(c))).norm() <= kPointTol * scale);
-    RC_ASSERT(std::abs(rg - g.length(r)) <= kPointTol * scale);
+    double k[3], kn[3], kr = 0, kg[3], kng[3], krg = 0;
+    RC_ASSERT(cyc_cone_circle(C.ctx, i == 0 ? &R : &S, k, kn, &kr) == CYC_OK);
+    RC_ASSERT(cyc_cone_circle(C.ctx, i == 0 ? &Rg : &Sg, kg, kng, &krg) == CYC_OK);
+    const double own = ((v3(c) - v3(k)).norm() + std::abs(r - kr)) / L +
+                       ((v3(cg) - v3(kg)).norm() + std::abs(rg - krg)) / scale;
+    RC_ASSERT(own <= 1e-6);
+    RC_ASSERT((v3(cg) - g.point(v3(c))).norm() <= (kPointTol + own) * scale);
+    RC_ASSERT(std::abs(rg - g.length(r)) <= (kPointTol + own) * scale);
   }
 }

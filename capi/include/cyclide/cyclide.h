@@ -1170,8 +1170,9 @@ CYC_API int cyc_optimize_pcurve_bump(cyc_context* ctx, const cyc_ringed_jet* a,
 #define CYC_PARAMETER_BUMP_DISPLACEMENT 1 /* w[index] of the directrix bump */
 #define CYC_PARAMETER_BUMP_POSITION 2     /* tau of the directrix bump */
 #define CYC_PARAMETER_CIRCLE_POINT 3      /* theta = 2 atan v[order] at end `index` */
-#define CYC_PARAMETER_FAMILY 4            /* phi = atan(alpha) of a double cyclide blend
-                                             on branch `index` (+1 or -1) */
+#define CYC_PARAMETER_FAMILY 4            /* phi = atan(unit alpha) of a double cyclide
+                                             blend on branch `index` (+1 or -1); unit:
+                                             see cyc_cyclide_blend_auto */
 typedef struct cyc_free_parameter {
   int role;            /* CYC_PARAMETER_* */
   int index;           /* the end or the component */
@@ -1899,8 +1900,10 @@ CYC_API int cyc_cyclide_blend_beta(cyc_context* ctx, const cyc_lie_cone* r,
 CYC_API int cyc_cyclide_blend_build(cyc_context* ctx, const cyc_lie_cone* r, const cyc_lie_cone* s,
                               int branch, double alpha, cyc_cyclide_blend* out);
 /** Algorithm 2 with the free parameter chosen: samples (8..4096) values
- *  alpha = tan(phi) on both branches, the best by quality, refined by
- *  golden section. quality (may be NULL) = min / max circle radius over
+ *  alpha = tan(phi) / unit on both branches (unit: the power of 2 nearest
+ *  to the cones' size, so that a model and the model scaled by a power of
+ *  2 get the same blend), the best by quality, refined by golden
+ *  section. quality (may be NULL) = min / max circle radius over
  *  both circle families of the patches. CYC_E_BLEND_FOLDS or
  *  CYC_E_SINGULAR_POINT when no sample is valid. Allocation-free. */
 CYC_API int cyc_cyclide_blend_auto(cyc_context* ctx, const cyc_lie_cone* r,
@@ -1943,8 +1946,8 @@ CYC_API int cyc_cyclide_blend_continuity(cyc_context* ctx, const cyc_lie_cone* r
                                          int n, cyc_cyclide_blend_report* out);
 
 /* Optimizer tier (seed 003 §4, Case II): the double blend's family
- * parameter phi = atan(alpha) chosen against a user objective (SPEC.md
- * §8h.12). */
+ * parameter phi = atan(unit alpha) (unit as in cyc_cyclide_blend_auto)
+ * chosen against a user objective (SPEC.md §8h.12). */
 
 /** The objective, a weighted sum (1/2 the sum of squared residuals) of
  *  - fairness: the spread of the log radii of the patches' circles
