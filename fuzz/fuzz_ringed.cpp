@@ -195,6 +195,10 @@ void op_blend(Input& in, Ctx& c) {
   cyc_ringed_jet a, b;
   bool moderate = fill_jet(in, a);
   moderate = fill_jet(in, b) && moderate;
+  for (const cyc_ringed_jet* J : {&a, &b})
+    FZ_LOG("  jet d %a %a %a dd %a %a %a n %a %a %a dn %a %a %a rho %a drho %a", J->d[0], J->d[1],
+           J->d[2], J->dd[0], J->dd[1], J->dd[2], J->n[0], J->n[1], J->n[2], J->dn[0], J->dn[1],
+           J->dn[2], J->rho, J->drho);
   cyc_pcurve_blend_options o;
   cyc_pcurve_blend_options_init(&o);
   const bool null_options = in.rarely();
