@@ -498,7 +498,9 @@ void parameterize(Input& in, Ctx& c, const cyc_darboux& D, const cyc_cyclide_lin
     if (kind != CYC_SURFACE_PRCS && kind != CYC_SURFACE_PRRS)
       FZ_CHECK(s == CYC_E_INVALID_ARGUMENT, "parabolic_parameterize kind %d: %s", kind,
                cyc_status_name(s));
-    if (A && lines_status == CYC_OK && kind == CYC_SURFACE_PRCS && A->double_families == 0)
+    // (u0, u1 beyond the input range are refused first: NOT_FINITE)
+    if (A && lines_status == CYC_OK && kind == CYC_SURFACE_PRCS && A->double_families == 0 &&
+        std::abs(u0) <= 1e100 && std::abs(u1) <= 1e100)
       FZ_CHECK(s == CYC_E_NOT_CANAL, "PRCS without a double line: %s", cyc_status_name(s));
     if (lines_status != CYC_OK && lines_status != CYC_E_NULL_ARGUMENT &&
         (kind == CYC_SURFACE_PRCS || kind == CYC_SURFACE_PRRS))
