@@ -16,6 +16,7 @@
 #include "cyclide/cyclide_blend.hpp"
 #include "cyclide/dupin.hpp"
 #include "cyclide/lie.hpp"
+#include "hardening/lie_spheres.hpp"
 
 using cyclide::DupinCyclide;
 using cyclide::DupinPoint;
@@ -45,23 +46,10 @@ bool contains(const char* s, const char* what) { return std::strstr(s, what) != 
 double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-cyc_lie_sphere sphere(double x, double y, double z, double rho) {
-  cyc_lie_sphere s;
-  std::memset(&s, 0, sizeof s);
-  s.kind = CYC_LIE_SPHERE;
-  s.m[0] = x, s.m[1] = y, s.m[2] = z;
-  s.rho = rho;
-  return s;
-}
-
-cyc_lie_sphere plane(double nx, double ny, double nz, double lambda) {
-  cyc_lie_sphere s;
-  std::memset(&s, 0, sizeof s);
-  s.kind = CYC_LIE_PLANE;
-  s.n[0] = nx, s.n[1] = ny, s.n[2] = nz;
-  s.lambda = lambda;
-  return s;
-}
+// Oriented spheres and planes as a host writes them (one copy, shared with
+// the hardening tests).
+using hostile::plane;
+using hostile::sphere;
 
 // |dist(x, z axis circle of radius R) - r| for a torus about the z axis.
 double torus_residual(const double* x, double R, double r) {
