@@ -299,9 +299,9 @@ void op_invert_point(Input& in, Ctx& c) {
              cyc_status_name(s));
     return;
   }
-  if (X[0] == inv.center[0] && X[1] == inv.center[1] && X[2] == inv.center[2])
-    FZ_CHECK(s == CYC_E_AT_INVERSION_CENTER, "invert_point at the center: %s",
-             cyc_status_name(s));
+  const bool at_center = X[0] == inv.center[0] && X[1] == inv.center[1] && X[2] == inv.center[2];
+  FZ_CHECK(at_center == (s == CYC_E_AT_INVERSION_CENTER), "invert_point %s the center: %s",
+           at_center ? "at" : "off", cyc_status_name(s));
   if (s != CYC_OK || !inversion_ws(inv) || !away_from_center(inv, X)) return;
   // The image lies on the ray from m through X at distance rho^2 / |Y|.
   double Y[3], Yp[3];
@@ -945,7 +945,8 @@ void op_surface_eval_inverted(Input& in, Ctx& c) {
                  o.s == CYC_E_NOT_FINITE || o.s == CYC_E_INVALID_ARGUMENT,
              "eval OK but eval_inverted %s", cyc_status_name(o.s));
     if (o.s == CYC_E_AT_INVERSION_CENTER)
-      FZ_CHECK(same_bits(e.o[0], inv.center, sizeof e.o[0]),
+      FZ_CHECK(e.o[0][0] == inv.center[0] && e.o[0][1] == inv.center[1] &&
+                   e.o[0][2] == inv.center[2],
                "eval_inverted: at the center but x != m");
     return;
   }

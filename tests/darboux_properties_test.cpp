@@ -80,6 +80,50 @@ RC_GTEST_PROP(DarbouxProperties, InversionIsAnInvolution, ()) {
   RC_ASSERT((Z - X).norm() <= kInvolutionTol * (1 + X.norm()));
 }
 
+// Inversion commutes with similarities: at scale 2^k (k in [-1000, 320]:
+// every coordinate a normal double within the input bound 1e100) the image of a point and of a
+// surface point (partials, normal) is 2^k times the image at scale 1, to
+// kInvolutionTol. |Y|^2 underflows below 2^-537, so this fails for any
+// inversion that squares |X - m|.
+RC_GTEST_PROP(DarbouxProperties, InversionCommutesWithScaling, ()) {
+  const int k = *rc::gen::inRange(-1000, 321);
+  const double s = std::ldexp(1.0, k);
+  const Inversion inv{*point(), 0.25 + std::abs(*coord())};
+  SurfacePoint p;
+  p.x = *point();
+  RC_PRE((p.x - inv.m).norm() > 0.25);
+  p.du = *point();
+  p.dv = *point();
+  p.normal = Vec3d(*coord(), *coord(), 1).normalized();
+  SurfacePoint q, qs;
+  RC_ASSERT(invert_surface_point(inv, p, true, true, true, q) == Status::ok);
+  const Inversion inv_s{s * inv.m, s * inv.rho};
+  SurfacePoint ps = p;
+  ps.x *= s;
+  ps.du *= s;
+  ps.dv *= s;
+  RC_ASSERT(invert_surface_point(inv_s, ps, true, true, true, qs) == Status::ok);
+  RC_ASSERT((qs.x / s - q.x).norm() <= kInvolutionTol * q.x.norm());
+  RC_ASSERT((qs.du / s - q.du).norm() <= kInvolutionTol * q.du.norm());
+  RC_ASSERT((qs.dv / s - q.dv).norm() <= kInvolutionTol * q.dv.norm());
+  RC_ASSERT((qs.normal - q.normal).norm() <= kInvolutionTol);
+  Vec3d X;
+  RC_ASSERT(invert_point(inv_s, ps.x, X) == Status::ok);
+  RC_ASSERT(X == qs.x);
+}
+
+// AT_INVERSION_CENTER exactly at the center: with rho = 2^-300, a point
+// 2^-600 from m = 0 (|Y|^2 = 2^-1200 underflows to 0) has its image at
+// distance 1, and one a denormal away has an image past the bound 1e100.
+TEST(DarbouxInversion, AtTheCenterOnlyAtTheCenter) {
+  const Inversion inv{Vec3d::Zero(), std::ldexp(1.0, -300)};
+  Vec3d Y;
+  EXPECT_EQ(invert_point(inv, Vec3d(0.0, -0.0, 0.0), Y), Status::at_inversion_center);
+  EXPECT_EQ(invert_point(inv, Vec3d(std::ldexp(1.0, -600), 0, 0), Y), Status::ok);
+  EXPECT_EQ(Y, Vec3d(1, 0, 0));
+  EXPECT_EQ(invert_point(inv, Vec3d(0, 4.9e-324, 0), Y), Status::numerical_overflow);
+}
+
 RC_GTEST_PROP(DarbouxProperties, InversionMapsCyclidePointsToTheInvertedCyclide, ()) {
   const ThreeLines T = *three_lines();
   DcmcFamily F;

@@ -188,17 +188,24 @@ Status check_inversion(const Inversion& inv) {
 }
 
 namespace {
-// X' without checks (X != m).
-Vec3d invert_raw(const Inversion& inv, const Vec3d& X) {
-  const Vec3d Y = X - inv.m;
-  return inv.m + (inv.rho * inv.rho / Y.squaredNorm()) * Y;
+// rho^2 Y / |Y|^2 = q rho Y/|Y| with q = rho/|Y|, for Y != 0. Never squares
+// |Y|: |Y|^2 underflows to 0 for |Y| < 1e-154 although the image is finite
+// (fuzz_darboux found AT_INVERSION_CENTER for a point 1e-170 from m).
+double inverse_ratio(const Inversion& inv, const Vec3d& Y) { return inv.rho / Y.stableNorm(); }
+Vec3d inverse_offset(const Inversion& inv, const Vec3d& Y) {
+  const double n = Y.stableNorm();
+  return (inv.rho * (inv.rho / n)) * (Y / n);
 }
+bool at_center(const Inversion& inv, const Vec3d& X) { return (X.array() == inv.m.array()).all(); }
+
+// X' without checks (X != m).
+Vec3d invert_raw(const Inversion& inv, const Vec3d& X) { return inv.m + inverse_offset(inv, X - inv.m); }
 }  // namespace
 
 Status invert_point(const Inversion& inv, const Vec3d& X, Vec3d& out) {
   if (Status st = check_inversion(inv); st != Status::ok) return st;
   if (!input_ok(X)) return Status::not_finite;
-  if (!((X - inv.m).squaredNorm() > 0)) return Status::at_inversion_center;
+  if (at_center(inv, X)) return Status::at_inversion_center;
   const Vec3d R = invert_raw(inv, X);
   if (!input_ok(R)) return Status::numerical_overflow;
   out = R;
@@ -359,16 +366,16 @@ Status invert_darboux(const Inversion& inv, const Darboux& D, Darboux& out) {
 Status invert_surface_point(const Inversion& inv, const SurfacePoint& p, bool du, bool dv,
                             bool normal, SurfacePoint& out) {
   if (Status st = check_inversion(inv); st != Status::ok) return st;
+  if (at_center(inv, p.x)) return Status::at_inversion_center;
   const Vec3d Y = p.x - inv.m;
-  const double s = Y.squaredNorm();
-  if (!(s > 0)) return Status::at_inversion_center;
-  const double k = inv.rho * inv.rho / s;
-  const Vec3d Yh = Y / std::sqrt(s);
+  // The differential is q^2 times the reflection in the plane normal to Y.
+  const double q = inverse_ratio(inv, Y);
+  const Vec3d Yh = Y.stableNormalized();
   auto reflect = [&](const Vec3d& v) { return v - 2 * Yh.dot(v) * Yh; };
   SurfacePoint r;
-  r.x = inv.m + k * Y;
-  if (du) r.du = k * reflect(p.du);
-  if (dv) r.dv = k * reflect(p.dv);
+  r.x = inv.m + inverse_offset(inv, Y);
+  if (du) r.du = q * (q * reflect(p.du));
+  if (dv) r.dv = q * (q * reflect(p.dv));
   if (normal) r.normal = reflect(p.normal);
   bool finite = input_ok(r.x);
   if (du) finite &= input_ok(r.du);
