@@ -2583,6 +2583,11 @@ static void test_ringed(cyc_context* ctx) {
   CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count),
                CYC_E_NOT_PYTHAGOREAN);
   CHECK(pieces[0] == SURF_SENT && count == -1);
+  o.v[1] = 1e-4;  /* n within 2.5e-5 rad of v at b: the planar P-curve is ill-conditioned */
+  CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, &o, pieces, &count),
+               CYC_E_NOT_PYTHAGOREAN);
+  CHECK(strstr(cyc_context_last_error(ctx), "condition") != NULL);
+  CHECK(pieces[0] == SURF_SENT && count == -1);
   CHECK_STATUS(ctx, cyc_blend_ringed_pcurve(ctx, &a, &b, NULL, pieces, &count), CYC_OK);
   CHECK(count == 1 && pieces[1] == SURF_SENT);
   if (count == 1) {

@@ -340,10 +340,17 @@ int pcurve_blend(const char* fn, cyc_context* ctx, const cyc_ringed_jet* a,
     double bad_u = NAN;  // set where a piece's domain scan fails
     if (Status s = make_ringed_pcurve_blend(jet_of(*a), jet_of(*b), o, S, n, &bad_u);
         s != Status::ok) {
-      if (s == Status::not_pythagorean)
+      if (s == Status::not_pythagorean) {
+        double kappa = 0;
+        if (ringed_pcurve_blend_condition(jet_of(*a), jet_of(*b), o, kappa) == Status::ok)
+          return fail(int(s), "%s: n is nearly parallel to the projection direction v (at "
+                      "an end or inside): the planar P-curve (39) has condition %.3g > 1e5 "
+                      "(its circles would carry rounding of ~5 eps times that); choose "
+                      "another options.v or options.sign", fn, kappa);
         return fail(int(s), "%s: n is parallel to the projection direction v at an end: the "
                     "projected Hermite data vanish and the planar P-curve (39) has no square "
                     "root there", fn);
+      }
       if (s == Status::bad_domain) {
         if (bump && !(o.bump.tau > 0 && o.bump.tau < 1))
           return fail(int(s), "%s: bump.tau = %.17g is not in (0, 1)", fn, o.bump.tau);

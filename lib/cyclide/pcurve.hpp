@@ -260,6 +260,16 @@ struct RingedBlendOptions {
 Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
                                 const RingedBlendOptions& options, Surface (&pieces)[2],
                                 int& count, double* bad_u = nullptr);
+// The condition kappa of the blend's planar part x = w^2 (the projection of
+// n): its largest coefficient over the least |x| = sigma on the pieces. The
+// circles (d, n, rho) carry rounding of about 5 eps kappa, their
+// derivatives about 14 eps kappa^1.5; make_ringed_pcurve_blend refuses
+// kappa > 1e5 with not_pythagorean (n nearly parallel to v at an end, where
+// w is small and w' = v/(2w) large, or inside, where w passes near 0).
+// Statuses of the planar part; the jets' values are not validated
+// (make_ringed_pcurve_blend does).
+Status ringed_pcurve_blend_condition(const RingedJet& a, const RingedJet& b,
+                                     const RingedBlendOptions& options, double& kappa);
 
 // Eq. (54) on any circle-family surface (d = the circle's center, rho its
 // radius): the clearance min over [u0, u1] of |d(t) - s| - rho(t) - r from

@@ -1,10 +1,12 @@
 #include "cyclide/pcurve.hpp"
 
+#include "poly_roots.hpp"
 #include "power_form.hpp"
 #include "cyclide/ringed.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cyclide {
 inline namespace v0 {
@@ -296,6 +298,7 @@ namespace {
 // |n x v| / |n| below this: n counts as parallel to v (§4 blend).
 constexpr double kParallelTol = 1e-8;
 
+
 // A rotation taking v to e3 (rows: an orthonormal basis e1, e2, v), with
 // e1 the projection of the x axis (of the y axis if v is near x) onto the
 // plane: the identity for v = e3, so the paper's coordinates are kept
@@ -383,6 +386,10 @@ namespace {
 
 Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
                     Surface (&pieces)[2], int& count, double* bad_u);
+struct PlanarLayout;
+Status planar_layout(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
+                     PlanarLayout& L);
+double layout_condition(const PlanarLayout& L);
 
 }  // namespace
 
@@ -403,38 +410,46 @@ Status make_ringed_pcurve_blend(const RingedJet& a, const RingedJet& b,
 
 namespace {
 
-Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
-                    Surface (&pieces)[2], int& count, double* bad_u) {
+// The largest condition of the planar part the blend accepts (SPEC 8f.5):
+// its circles (d, n, rho) then carry rounding of about 5 eps kappa, their
+// derivatives about 14 eps kappa^1.5 (1e-7 here).
+constexpr double kMaxPCurveCondition = 1e5;
+
+// The blend's planar part: the rotation M taking v to e3 and the P-curve(s)
+// (39) of the projection of n, one (43) or two (47) pieces [0, split],
+// [split, 1] (the two-piece bump (57) splits a single P-curve at its tau).
+struct PlanarLayout {
+  Eigen::Matrix3d M;
+  PlanarPCurve P[2];
+  int m = 1;
+  double split = 1.0;
+};
+
+Status planar_layout(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
+                     PlanarLayout& L) {
   // v scaled by its largest component before normalizing: |v| of a tiny v
   // (components ~1e-245, fuzz_ringed regress-tiny-v) underflows to 0.
   const double vmax = options.v.cwiseAbs().maxCoeff();
   if (!(vmax > 0)) return Status::invalid_argument;
   if (options.tau != 0.0 && !(options.tau > 0 && options.tau < 1)) return Status::bad_domain;
-  const Eigen::Matrix3d M = to_e3((options.v / vmax).normalized());
-  // Data in the frame where v = e3 (38), (39).
-  const Vec3d d0 = M * a.d, dd0 = M * a.dd, n0 = M * a.n, dn0 = M * a.dn;
-  const Vec3d d1 = M * b.d, dd1 = M * b.dd, n1 = M * b.n, dn1 = M * b.dn;
-  // (38): Ferguson cubics for d, n . v and rho.
-  CurvePoly D[3], rho = ferguson(a.rho, a.drho, b.rho, b.drho);
-  for (int j = 0; j < 3; ++j) D[j] = ferguson(d0[j], dd0[j], d1[j], dd1[j]);
-  const CurvePoly n3 = ferguson(n0.z(), dn0.z(), n1.z(), dn1.z());
-  // (39): the planar data as complex numbers, one or two P-curves. n
-  // (nearly) parallel to v at an end leaves no planar data to take the
-  // square root of (rounding would make |p| ~ 1e-16 |n|, and w1 huge).
+  L.M = to_e3((options.v / vmax).normalized());
+  // (39): the planar data as complex numbers. n (nearly) parallel to v at
+  // an end leaves no planar data to take the square root of (rounding
+  // would make |p| ~ 1e-16 |n|, and w1 huge).
+  const Vec3d n0 = L.M * a.n, dn0 = L.M * a.dn, n1 = L.M * b.n, dn1 = L.M * b.dn;
   const Complex p0(n0.x(), n0.y()), v0(dn0.x(), dn0.y()), p1(n1.x(), n1.y()),
       v1(dn1.x(), dn1.y());
   if (!(std::abs(p0) > kParallelTol * n0.norm()) || !(std::abs(p1) > kParallelTol * n1.norm()))
     return Status::not_pythagorean;
-  PlanarPCurve P[2];
-  int m = 1;
-  if (options.tau == 0.0) {
-    if (Status st = planar_pcurve_hermite(p0, v0, p1, v1, options.sign, P[0]); st != Status::ok)
-      return st;
-  } else {
-    if (Status st = planar_pbiarc(p0, v0, p1, v1, options.tau, options.sign, P); st != Status::ok)
-      return st;
-    m = 2;
-  }
+  L.m = options.tau == 0.0 ? 1 : 2;
+  L.split = L.m == 1 ? 1.0 : options.tau;
+  const Status st = L.m == 1 ? planar_pcurve_hermite(p0, v0, p1, v1, options.sign, L.P[0])
+                             : planar_pbiarc(p0, v0, p1, v1, options.tau, options.sign, L.P);
+  if (st != Status::ok) return st;
+  // x = w^2 beyond the curves' magnitude bound (w2 of (47) ~ 1/tau).
+  for (int k = 0; k < L.m; ++k)
+    for (int i = 0; i <= L.P[k].n; ++i)
+      if (!(std::norm(L.P[k].w[i]) <= kMaxInputMagnitude)) return Status::numerical_overflow;
   // §5: the bump; the two-piece bump (57) splits the blend at its tau.
   const DirectrixBump& B = options.bump;
   if (!input_ok(B.w) || !input_ok(B.tau)) return Status::not_finite;
@@ -442,17 +457,82 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
   if (bumped && !(B.tau > 0 && B.tau < 1)) return Status::bad_domain;
   if (bumped && B.kind != BumpKind::single && B.kind != BumpKind::two_piece)
     return Status::invalid_argument;
-  double split = m == 1 ? 1.0 : options.tau;
   if (bumped && B.kind == BumpKind::two_piece) {
-    if (m == 2 && options.tau != B.tau) return Status::invalid_argument;  // one split only
-    if (m == 1) P[1] = P[0];  // the same P-curve on both sides
-    m = 2;
-    split = B.tau;
+    if (L.m == 2 && options.tau != B.tau) return Status::invalid_argument;  // one split only
+    if (L.m == 1) L.P[1] = L.P[0];  // the same P-curve on both sides
+    L.m = 2;
+    L.split = B.tau;
   }
+  return Status::ok;
+}
+
+// Piece k's planar part x = (x1, x2) = w^2 and sigma = |w|^2 as polynomials
+// in its variable s in [0, length]: s = t for the first piece, s = 1 - t
+// for the second (built from its outer end, see pcurve_blend).
+void piece_polys(const PlanarLayout& L, int k, CurvePoly& x1, CurvePoly& x2, CurvePoly& sigma,
+                 double& length) {
+  const bool mirrored = k == 1;
+  planar_pcurve_polys(mirrored ? reversed(L.P[k]) : L.P[k], x1, x2, sigma);
+  length = mirrored ? 1 - L.split : L.split;
+}
+
+// min of sigma >= 0 over [0, length]: the ends and the real roots of sigma'.
+double least_sigma(const CurvePoly& sigma, double length) {
+  double low = std::min(sigma(0.0), sigma(length));
+  CurvePoly d = sigma.derivative();
+  while (d.deg > 0 && d.c[d.deg] == 0) --d.deg;
+  if (d.deg < 1) return low;
+  std::complex<double> z[detail::kMaxRootsDegree];
+  const int r = detail::poly_roots(d, z);
+  for (int i = 0; i < r; ++i) {
+    const double s = z[i].real();
+    if (std::abs(z[i].imag()) <= 1e-6 * (1 + std::abs(s)) && s > 0 && s < length)
+      low = std::min(low, sigma(s));
+  }
+  return low;
+}
+
+// The condition of the blend's planar part: the largest term of x = w^2 on
+// a piece's domain over the least |x| = sigma there. n nearly parallel
+// to v at an end (w small there, w' = v/(2w) large (43)) or inside (w
+// passing near 0, e.g. a biarc whose joint is 0) makes x cancel, and the
+// cancellation reaches c = d + rho f through f = (x2, -x1)/sigma.
+double layout_condition(const PlanarLayout& L) {
+  double kappa = 0;
+  for (int k = 0; k < L.m; ++k) {
+    CurvePoly x1, x2, sigma;
+    double length = 1;
+    piece_polys(L, k, x1, x2, sigma, length);
+    double top = 0, power = 1;  // the largest term |x_i| s^i on [0, length]
+    for (int i = 0; i <= std::max(x1.deg, x2.deg); ++i, power *= length)
+      top = std::max(top, power * std::hypot(i <= x1.deg ? x1.c[i] : 0.0,
+                                              i <= x2.deg ? x2.c[i] : 0.0));
+    const double low = least_sigma(sigma, length);  // rounding can make it <= 0
+    kappa = std::max(kappa, low > 0 ? top / low : std::numeric_limits<double>::infinity());
+  }
+  return kappa;
+}
+
+Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
+                    Surface (&pieces)[2], int& count, double* bad_u) {
+  PlanarLayout L;
+  if (Status st = planar_layout(a, b, options, L); st != Status::ok) return st;
+  if (!(layout_condition(L) <= kMaxPCurveCondition)) return Status::not_pythagorean;
+  const Eigen::Matrix3d& M = L.M;
+  const int m = L.m;
+  // Data in the frame where v = e3 (38), (39).
+  const Vec3d d0 = M * a.d, dd0 = M * a.dd, n0 = M * a.n, dn0 = M * a.dn;
+  const Vec3d d1 = M * b.d, dd1 = M * b.dd, n1 = M * b.n, dn1 = M * b.dn;
+  // (38): Ferguson cubics for d, n . v and rho.
+  CurvePoly D[3], rho = ferguson(a.rho, a.drho, b.rho, b.drho);
+  for (int j = 0; j < 3; ++j) D[j] = ferguson(d0[j], dd0[j], d1[j], dd1[j]);
+  const CurvePoly n3 = ferguson(n0.z(), dn0.z(), n1.z(), dn1.z());
+  const DirectrixBump& B = options.bump;
+  const bool bumped = B.w != Vec3d::Zero();
   CurvePoly bump[2];
   if (bumped) bump_polys(B, bump[0], bump[1]);
   const Vec3d Mw = M * B.w;
-  const double knots[3] = {0.0, split, 1.0};
+  const double knots[3] = {0.0, L.split, 1.0};
   Surface out[2];
   for (int k = 0; k < m; ++k) {
     // The coefficients (47) of the P-biarc grow like 1/tau in the piece
@@ -474,7 +554,8 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
     // n = (x1, x2, n3); f = n x e3 / sigma = (x2, -x1, 0) / sigma (15);
     // c = d + rho f (4); everything rotated back to world coordinates.
     CurvePoly x1, x2, sigma;
-    planar_pcurve_polys(mirrored ? reversed(P[k]) : P[k], x1, x2, sigma);
+    double length = 1;
+    piece_polys(L, k, x1, x2, sigma, length);
     const CurvePoly nl[3] = {x1, x2, n3l};
     RationalField f;
     const CurvePoly fl[3] = {x2, -x1, CurvePoly()};
@@ -501,6 +582,14 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
 }
 
 }  // namespace
+
+Status ringed_pcurve_blend_condition(const RingedJet& a, const RingedJet& b,
+                                     const RingedBlendOptions& options, double& kappa) {
+  PlanarLayout L;
+  if (Status st = planar_layout(a, b, options, L); st != Status::ok) return st;
+  kappa = layout_condition(L);
+  return Status::ok;
+}
 
 // (52) (sign per ERRATA.md) and (57).
 void bump_polys(const DirectrixBump& bump, CurvePoly& left, CurvePoly& right) {

@@ -683,7 +683,11 @@ CYC_API void cyc_pcurve_blend_options_init(cyc_pcurve_blend_options* options);
  *  perpendicular to v (its e1 is the projection of the x axis, of the y axis
  *  when v is near x): with v = (0, 0, 1) the paper's coordinates.
  *  CYC_E_NOT_PYTHAGOREAN when n is parallel to v at an end (the projected
- *  data vanish: no square root), CYC_E_BAD_DOMAIN for tau outside [0, 1),
+ *  data vanish: no square root) or so nearly parallel, at an end or inside,
+ *  that the planar P-curve's condition exceeds 1e5 (the circles would carry
+ *  rounding beyond ~1e-11, their derivatives beyond ~1e-7: choose another v
+ *  or sign), CYC_E_NUMERICAL_OVERFLOW when its coefficients exceed 1e100
+ *  (tau near 0), CYC_E_BAD_DOMAIN for tau outside [0, 1),
  *  CYC_E_INVALID_ARGUMENT for sign not +-1 or v = 0, and the statuses of
  *  cyc_ringed_create. options may be NULL (defaults). */
 CYC_API int cyc_blend_ringed_pcurve(cyc_context* ctx, const cyc_ringed_jet* a,
