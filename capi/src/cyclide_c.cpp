@@ -764,10 +764,10 @@ int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface, double 
     // tolerance <= 0 chooses the default; NaN or beyond the input range is
     // an error like any other double input.
     TRY(check_double(fn, "tolerance", tolerance));
-    double worst = 0;
-    if (Status s = surface->surface.canal_test(worst); s != Status::ok)
+    double worst = 0, floor = 0;
+    if (Status s = surface->surface.canal_test(worst, &floor); s != Status::ok)
       return from_core(fn, s);
-    const double tol = tolerance > 0 ? tolerance : 1e-9;
+    const double tol = tolerance > 0 ? tolerance : kCanalTolerance + kCanalFloorFactor * floor;
     if (max_residual) *max_residual = worst;
     if (is_canal) *is_canal = worst <= tol;
     return ok();

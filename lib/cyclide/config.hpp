@@ -40,6 +40,14 @@ constexpr double kMobiusDeterminantFloor = 1e-100;
 // Samples of the domain scanned at creation for degenerate parameters.
 constexpr int kDomainSamples = 257;
 
+// The canal test's default tolerance (eq. (2)'s residual is scale-free) and
+// the factor of its rounding floor eps max |c| / rho added to it: a canal
+// surface 10^7 radii from the origin leaves residuals ~1e-9 from positions
+// rounded to eps |c| (measured below 4500 eps |c| / rho), so the default
+// decides the same for a model moved anywhere.
+constexpr double kCanalTolerance = 1e-9;
+constexpr double kCanalFloorFactor = 8192;
+
 // Largest finite magnitude accepted for input numbers; larger values are
 // rejected as non-finite input so that products of a few of them stay finite.
 constexpr double kMaxInputMagnitude = 1e100;

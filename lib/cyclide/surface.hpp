@@ -147,8 +147,11 @@ class Surface {
   // Ringed data (c, n, rho^2, rho rho' and c', n') at u: eq. (1) for canal
   // surfaces (the circle's center, plane normal s' and radius).
   Status ringed(double u, RingedData& R) const;
-  // Eq. (2) over the domain samples: the largest relative residual.
-  Status canal_test(double& max_residual) const;
+  // Eq. (2) over the domain samples: the largest relative residual and, if
+  // asked, its rounding floor max |c| / rho (times eps): the circle data
+  // are world positions rounded to eps |c|, so a canal surface far from the
+  // origin leaves a residual up to about kCanalFloorFactor times that.
+  Status canal_test(double& max_residual, double* floor = nullptr) const;
 
   // Arbitrary (u, v) pairs uv[i*uv_stride], uv[i*uv_stride+1]; all or
   // nothing like eval_grid (every point is computed once to validate, then

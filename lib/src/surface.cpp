@@ -4,6 +4,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 namespace cyclide {
 inline namespace v0 {
@@ -302,15 +303,17 @@ Status Surface::ringed(double u, RingedData& R) const {
   return Status::ok;
 }
 
-Status Surface::canal_test(double& max_residual) const {
-  double worst = 0;
+Status Surface::canal_test(double& max_residual, double* floor) const {
+  double worst = 0, far = 0;
   for (int k = 0; k < kDomainSamples; ++k) {
     const double u = sample(k);
     RingedData R;
     if (Status st = ringed(u, R); st != Status::ok) return st;
     worst = std::max(worst, canal_residual(R));
+    if (R.rho2 > 0) far = std::max(far, R.c.norm() / std::sqrt(R.rho2));
   }
   max_residual = worst;
+  if (floor) *floor = std::numeric_limits<double>::epsilon() * far;
   return Status::ok;
 }
 

@@ -277,8 +277,10 @@ CYC_API int cyc_surface_ringed_sphere(cyc_context* ctx, const cyc_surface* surfa
                                       double u, cyc_sphere* out);
 /** Canal test (2) over the domain: the largest relative residual
  *  |[(n.c')c' + rho rho' n'] x n| / scale at the domain samples, and
- *  *is_canal = (residual <= tolerance); tolerance <= 0 uses 1e-9; a
- *  tolerance that is NaN, infinite or beyond 1e100 is CYC_E_NOT_FINITE. */
+ *  *is_canal = (residual <= tolerance); tolerance <= 0 uses 1e-9 plus the
+ *  residual's rounding floor 8192 eps max |c| / rho (c the circles' centers,
+ *  rho their radii: a surface far from the origin decides as at the origin);
+ *  a tolerance that is NaN, infinite or beyond 1e100 is CYC_E_NOT_FINITE. */
 CYC_API int cyc_surface_canal_test(cyc_context* ctx, const cyc_surface* surface,
                                    double tolerance, double* max_residual, int* is_canal);
 /** The v whose point x(u, v) is the point of the circle at u closest to
