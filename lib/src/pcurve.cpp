@@ -298,7 +298,6 @@ namespace {
 // |n x v| / |n| below this: n counts as parallel to v (§4 blend).
 constexpr double kParallelTol = 1e-8;
 
-
 // A rotation taking v to e3 (rows: an orthonormal basis e1, e2, v), with
 // e1 the projection of the x axis (of the y axis if v is near x) onto the
 // plane: the identity for v = e3, so the paper's coordinates are kept
@@ -386,10 +385,6 @@ namespace {
 
 Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
                     Surface (&pieces)[2], int& count, double* bad_u);
-struct PlanarLayout;
-Status planar_layout(const RingedJet& a, const RingedJet& b, const RingedBlendOptions& options,
-                     PlanarLayout& L);
-double layout_condition(const PlanarLayout& L);
 
 }  // namespace
 
@@ -469,26 +464,25 @@ Status planar_layout(const RingedJet& a, const RingedJet& b, const RingedBlendOp
 // Piece k's planar part x = (x1, x2) = w^2 and sigma = |w|^2 as polynomials
 // in its variable s in [0, length]: s = t for the first piece, s = 1 - t
 // for the second (built from its outer end, see pcurve_blend).
-void piece_polys(const PlanarLayout& L, int k, CurvePoly& x1, CurvePoly& x2, CurvePoly& sigma,
-                 double& length) {
+struct PiecePolys {
+  CurvePoly x1, x2, sigma;
+  double length = 1;
+};
+PiecePolys piece_polys(const PlanarLayout& L, int k) {
   const bool mirrored = k == 1;
-  planar_pcurve_polys(mirrored ? reversed(L.P[k]) : L.P[k], x1, x2, sigma);
-  length = mirrored ? 1 - L.split : L.split;
+  PiecePolys p;
+  planar_pcurve_polys(mirrored ? reversed(L.P[k]) : L.P[k], p.x1, p.x2, p.sigma);
+  p.length = mirrored ? 1 - L.split : L.split;
+  return p;
 }
 
 // min of sigma >= 0 over [0, length]: the ends and the real roots of sigma'.
 double least_sigma(const CurvePoly& sigma, double length) {
   double low = std::min(sigma(0.0), sigma(length));
-  CurvePoly d = sigma.derivative();
-  while (d.deg > 0 && d.c[d.deg] == 0) --d.deg;
-  if (d.deg < 1) return low;
-  std::complex<double> z[detail::kMaxRootsDegree];
-  const int r = detail::poly_roots(d, z);
-  for (int i = 0; i < r; ++i) {
-    const double s = z[i].real();
-    if (std::abs(z[i].imag()) <= 1e-6 * (1 + std::abs(s)) && s > 0 && s < length)
-      low = std::min(low, sigma(s));
-  }
+  double s[kMaxCurveDegree];
+  const int r = detail::nearly_real_roots(sigma.derivative(), s);
+  for (int i = 0; i < r; ++i)
+    if (s[i] > 0 && s[i] < length) low = std::min(low, sigma(s[i]));
   return low;
 }
 
@@ -496,18 +490,17 @@ double least_sigma(const CurvePoly& sigma, double length) {
 // a piece's domain over the least |x| = sigma there. n nearly parallel
 // to v at an end (w small there, w' = v/(2w) large (43)) or inside (w
 // passing near 0, e.g. a biarc whose joint is 0) makes x cancel, and the
-// cancellation reaches c = d + rho f through f = (x2, -x1)/sigma.
-double layout_condition(const PlanarLayout& L) {
+// cancellation reaches c = d + rho f through f = (x2, -x1)/sigma. The
+// pieces' polynomials are returned in pp for the construction.
+double layout_condition(const PlanarLayout& L, PiecePolys (&pp)[2]) {
   double kappa = 0;
   for (int k = 0; k < L.m; ++k) {
-    CurvePoly x1, x2, sigma;
-    double length = 1;
-    piece_polys(L, k, x1, x2, sigma, length);
+    const PiecePolys& p = pp[k] = piece_polys(L, k);
     double top = 0, power = 1;  // the largest term |x_i| s^i on [0, length]
-    for (int i = 0; i <= std::max(x1.deg, x2.deg); ++i, power *= length)
-      top = std::max(top, power * std::hypot(i <= x1.deg ? x1.c[i] : 0.0,
-                                              i <= x2.deg ? x2.c[i] : 0.0));
-    const double low = least_sigma(sigma, length);  // rounding can make it <= 0
+    for (int i = 0; i <= std::max(p.x1.deg, p.x2.deg); ++i, power *= p.length)
+      top = std::max(top, power * std::hypot(i <= p.x1.deg ? p.x1.c[i] : 0.0,
+                                              i <= p.x2.deg ? p.x2.c[i] : 0.0));
+    const double low = least_sigma(p.sigma, p.length);  // rounding can make it <= 0
     kappa = std::max(kappa, low > 0 ? top / low : std::numeric_limits<double>::infinity());
   }
   return kappa;
@@ -517,7 +510,8 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
                     Surface (&pieces)[2], int& count, double* bad_u) {
   PlanarLayout L;
   if (Status st = planar_layout(a, b, options, L); st != Status::ok) return st;
-  if (!(layout_condition(L) <= kMaxPCurveCondition)) return Status::not_pythagorean;
+  PiecePolys pp[2];
+  if (!(layout_condition(L, pp) <= kMaxPCurveCondition)) return Status::not_pythagorean;
   const Eigen::Matrix3d& M = L.M;
   const int m = L.m;
   // Data in the frame where v = e3 (38), (39).
@@ -553,9 +547,7 @@ Status pcurve_blend(const RingedJet& a, const RingedJet& b, const RingedBlendOpt
     }
     // n = (x1, x2, n3); f = n x e3 / sigma = (x2, -x1, 0) / sigma (15);
     // c = d + rho f (4); everything rotated back to world coordinates.
-    CurvePoly x1, x2, sigma;
-    double length = 1;
-    piece_polys(L, k, x1, x2, sigma, length);
+    const CurvePoly &x1 = pp[k].x1, &x2 = pp[k].x2, &sigma = pp[k].sigma;
     const CurvePoly nl[3] = {x1, x2, n3l};
     RationalField f;
     const CurvePoly fl[3] = {x2, -x1, CurvePoly()};
@@ -587,7 +579,8 @@ Status ringed_pcurve_blend_condition(const RingedJet& a, const RingedJet& b,
                                      const RingedBlendOptions& options, double& kappa) {
   PlanarLayout L;
   if (Status st = planar_layout(a, b, options, L); st != Status::ok) return st;
-  kappa = layout_condition(L);
+  PiecePolys pp[2];
+  kappa = layout_condition(L, pp);
   return Status::ok;
 }
 

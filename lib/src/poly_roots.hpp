@@ -51,6 +51,21 @@ inline int poly_roots(const CurvePoly& p, std::complex<double>* roots) {
   return m;
 }
 
+// The real roots of p, nearly real ones included (|Im z| <= 1e-6 (1 + |z|)),
+// after trimming leading coefficients below 1e-15 of the largest: their
+// number (0 for a constant), or -1 if the roots cannot be computed.
+inline int nearly_real_roots(const CurvePoly& p, double* out) {
+  CurvePoly a = p;
+  a.trim_relative(1e-15);
+  if (a.deg == 0) return 0;
+  std::complex<double> z[kMaxRootsDegree];
+  if (a.deg > kMaxRootsDegree || poly_roots(a, z) != a.deg) return -1;
+  int r = 0;
+  for (int i = 0; i < a.deg; ++i)
+    if (std::abs(z[i].imag()) <= 1e-6 * (1 + std::abs(z[i]))) out[r++] = z[i].real();
+  return r;
+}
+
 }  // namespace detail
 }  // namespace v0
 }  // namespace cyclide

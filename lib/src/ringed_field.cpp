@@ -63,19 +63,6 @@ Complex ceval(const CPoly& g, int m, double t) {
   return s;
 }
 
-// The real roots of p (nearly real ones included: n3 is tiny there too).
-int real_roots(const CurvePoly& p, double* out) {
-  CurvePoly a = p;
-  a.trim_relative(1e-15);
-  if (a.deg == 0) return 0;
-  Complex z[kMaxCurveDegree];
-  if (a.deg > kMaxSosDegree || detail::poly_roots(a, z) != a.deg) return -1;
-  int r = 0;
-  for (int i = 0; i < a.deg; ++i)
-    if (std::abs(z[i].imag()) <= 1e-6 * (1 + std::abs(z[i]))) out[r++] = z[i].real();
-  return r;
-}
-
 }  // namespace
 
 // Example 3.3.
@@ -174,7 +161,7 @@ Status sos_field(const RationalCurve& n, RationalField& out, SosFieldReport* rep
     const CurvePoly& n2 = N[(axis + 2) % 3];
     if (max_abs(n3) == 0) continue;  // the pole lies on every circle
     double roots[kMaxCurveDegree];
-    const int r = real_roots(n3, roots);
+    const int r = detail::nearly_real_roots(n3, roots);  // n3 is tiny near them too
     if (r < 0) continue;
     for (int k = 0; k < 16; ++k) {
       const double theta = k * (3.141592653589793 / 8);
