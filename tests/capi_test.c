@@ -2075,6 +2075,7 @@ static void test_darboux_lines(cyc_context* ctx) {
   /* (39) and (61). */
   const cyc_darboux c39 = {{0, 0, 0, 4, 0, -8, -3, -6, 0, 0, 0, 0, -1, 0}};
   const cyc_darboux c61 = {{0, 0, 0, 1, 0, -1, -3.25, 0.5, -0.5, 0.5, 0, 0, 0.75, 0}};
+  const cyc_darboux c35 = {{0, 0, 0, 1, 0, -1, -3, -3, 0, 0, 0, 0, 2, 0}}; /* (35), alpha = 0 */
   const cyc_darboux sphere = {{0, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, -1}};
   /* (57) with l3^ of (58), and with the original d3. */
   const cyc_line ex5[3] = {{{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {2, 1, 0}}, {{1, 1, 1}, {-1, 2, 0}}};
@@ -2130,6 +2131,18 @@ static void test_darboux_lines(cyc_context* ctx) {
   CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, &c61, CYC_SURFACE_PRCS, -1, 1, in, &S),
                CYC_E_NOT_CANAL);
   CHECK(S == SURF_SENT);
+  /* (35), alpha = 0: every choice of input lines has two meeting at u = 0,
+   * where the pencil plane's circle is lost; a domain without it works. */
+  CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, &c35, CYC_SURFACE_PRRS, -1, 1, in, &S),
+               CYC_E_COLLINEAR_POINTS);
+  CHECK(S == SURF_SENT);
+  CHECK(strstr(cyc_context_last_error(ctx), "meet") != NULL &&
+        strstr(cyc_context_last_error(ctx), "[-1, 1]") != NULL);
+  S = NULL;
+  CHECK_STATUS(ctx, cyc_parabolic_parameterize(ctx, &c35, CYC_SURFACE_PRRS, 0.1, 1, in, &S),
+               CYC_OK);
+  cyc_surface_destroy(ctx, S);
+  S = SURF_SENT;
   for (kind = CYC_SURFACE_PRCS; kind <= CYC_SURFACE_PRRS; ++kind) {
     const cyc_darboux* d = kind == CYC_SURFACE_PRCS ? &c39 : &c61;
     int u, v;

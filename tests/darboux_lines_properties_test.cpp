@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "cyclide/darboux_classify.hpp"
 #include "cyclide/darboux_lines.hpp"
@@ -133,9 +134,14 @@ void check_lines_and_circles(const Darboux& D, const ParabolicLines& A) {
   }
 }
 
-// The points of a surface lie on F.
+// The points of a surface lie on F: at the ends and the middle of the
+// domain, and at random u (a base point between the domain samples, where
+// two input lines meet, shows there and not at the samples).
 void check_surface_on(const Darboux& D, const Surface& S) {
-  for (double u : {S.u0, 0.5 * (S.u0 + S.u1), S.u1})
+  std::vector<double> us = {S.u0, 0.5 * (S.u0 + S.u1), S.u1};
+  for (int i = 0; i < 4; ++i)
+    us.push_back(S.u0 + (S.u1 - S.u0) * *rc::gen::inRange(0, 1000001) / 1e6);
+  for (double u : us)
     for (double v : {-3.0, -0.4, 0.0, 0.7, 5.0}) {
       double x[3];
       EvalOut o;

@@ -3,6 +3,7 @@
 // and §8's conditions (55), (56) with Example 5 end to end.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cyclide/darboux_lines.hpp"
@@ -218,6 +219,45 @@ TEST(DarbouxLines, Prop5ParameterizesEq61ByPrrs) {
       ASSERT_EQ(S.eval(u, v, o), Status::ok);
       EXPECT_NEAR(C.value({x[0], x[1], x[2]}), 0.0, 1e-10 * (1 + Vec3d(x[0], x[1], x[2]).squaredNorm()));
     }
+}
+
+// Prop. 5 on cyclides whose first candidate has two input lines meeting at
+// u = 0, where the pencil plane's PRRS points coincide (a base point: the
+// circle there is lost, and rounding had left the sampled frame at u = 0
+// defined, with a circle off F). Found by fuzz_lines. The chosen input
+// lines must not meet on the domain, whether or not the meeting u is a
+// domain sample ([-1, 1] has u = 0 as a sample, [-0.9, 1.1] does not), and
+// every point must lie on F.
+TEST(DarbouxLines, Prop5AvoidsInputLinesThatMeetOnTheDomain) {
+  Darboux C;
+  const double k[14] = {0, 0, 0, 0x1.1511190abb306p-4, 0x1.44fb5d44f192fp-2,
+                        0x1.0c2524ece63c5p-1, 0x1.d5b2e83206ba1p-3, -0x1.1377f0a6979d8p-1,
+                        0x1.59051fe703a5p-1, 0x1.2851db35cc58ep-4, 1, 0x1.3ea8102921a1fp-1,
+                        0x1.bbbc446c743adp-2, 0x1.3da3ced2cff47p-1};
+  std::copy(k, k + 14, C.k);
+  for (const double u0 : {-1.0, -0.9}) {
+    const double u1 = u0 + 2;
+    Surface S;
+    PencilInput in;
+    ASSERT_EQ(parameterize_parabolic_prrs(C, u0, u1, S, &in), Status::ok) << u0;
+    for (int i = 0; i < in.count; ++i)
+      for (int j = i + 1; j < in.count; ++j) {
+        const Vec3d dP = in.curves[i].P - in.curves[j].P, dd = in.curves[i].d - in.curves[j].d;
+        const double u = std::clamp(-dP.dot(dd) / dd.squaredNorm(), u0, u1);
+        EXPECT_GT((dP + u * dd).norm(), 1e-6 * (1 + dP.norm())) << i << " " << j;
+      }
+    for (int a = 0; a <= 400; ++a)
+      for (double v : {-3.0, -0.4, 0.0, 0.7, 5.0}) {
+        const double u = u0 + (u1 - u0) * a / 400.0;
+        double x[3];
+        EvalOut o;
+        o.point = x;
+        ASSERT_EQ(S.eval(u, v, o), Status::ok) << u << " " << v;
+        const Vec3d X(x[0], x[1], x[2]);
+        EXPECT_LE(std::abs(C.value(X)), 1e-10 * (1 + C.gradient(X).norm()) * (1 + X.squaredNorm()))
+            << "u = " << u << " v = " << v;
+      }
+  }
 }
 
 // ------------------------------------------------------ Appendices A and B

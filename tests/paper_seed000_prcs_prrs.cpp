@@ -262,6 +262,29 @@ TEST_F(Example5, CoincidentPointsAtU0AreReported) {
   EXPECT_EQ(make_prrs(l1, l2, l3, nullptr, -1, -0.1, T), Status::ok);
 }
 
+// Two PRRS points that coincide to rounding (1e-13 apart at u = 0) are
+// coincident: the angle at p1 is a right angle there, but the circle
+// through p1, p2 and p3 is then set by the rounding of p2 - p1. The
+// smallest angle of the triangle (at p3) judges it, at a domain sample
+// (refused at creation) and between samples (refused at evaluation).
+TEST(PrrsDegenerate, NearlyCoincidentPointsAreCollinear) {
+  const RationalCurve p1 = line({0, 0, 0}, {1, 0, 0});
+  const RationalCurve p2 = line({1e-13, 0, 0}, {0, 1, 0});
+  const RationalCurve p3 = line({0, 0, 1}, {0.5, 1, 0.2});
+  Surface T;
+  double bad_u = 1;
+  EXPECT_EQ(make_prrs(p1, p2, p3, nullptr, -1, 1, T, &bad_u), Status::collinear_points);
+  EXPECT_EQ(bad_u, 0.0);
+  // u = 0 between the samples of [-0.9, 1.1]: the surface is made, and
+  // at u = 0 its evaluation reports the coincidence instead of a circle.
+  ASSERT_EQ(make_prrs(p1, p2, p3, nullptr, -0.9, 1.1, T), Status::ok);
+  double x[3];
+  EvalOut o;
+  o.point = x;
+  EXPECT_EQ(T.eval(0.0, 0.3, o), Status::collinear_points);
+  EXPECT_EQ(T.eval(0.25, 0.3, o), Status::ok);
+}
+
 TEST_F(Example5, DirectrixIsEq64Exactly) {
   // (64): c = (-3u + 4u^2 + 8u^3, 7u - 4u^2 + 24u^3, 3 - 2u + 8u^2) / (2 + 16u^2).
   ExactFrame F;

@@ -1375,6 +1375,11 @@ int cyc_parabolic_parameterize(cyc_context* ctx, const cyc_darboux* d, int kind,
     PencilInput I;
     const Status s = kind == CYC_SURFACE_PRCS ? parameterize_parabolic_prcs(D, u0, u1, S, &I)
                                               : parameterize_parabolic_prrs(D, u0, u1, S, &I);
+    if (s == Status::collinear_points || s == Status::dependent_planes)
+      return fail(int(s), "%s: for every choice of lines, two input lines meet (or the %s "
+                  "are degenerate) at a u inside [u0, u1] = [%g, %g]: a pencil plane there "
+                  "has no circle of the construction; choose a domain that avoids it", fn,
+                  kind == CYC_SURFACE_PRCS ? "PRCS planes" : "PRRS points", u0, u1);
     if (s != Status::ok) return from_core(fn, s);
     cyc_line L[3];
     std::memset(L, 0, sizeof L);

@@ -6,6 +6,8 @@
 // (CircleFrame o = c, a = n, p = p1). No derivative of the inputs is needed.
 #pragma once
 
+#include <algorithm>
+
 #include "cyclide/circle_family.hpp"
 #include "cyclide/config.hpp"
 #include "cyclide/curve.hpp"
@@ -68,12 +70,30 @@ ThreePlanes<Taylor<S, K>> prrs_planes(const RationalCurve& p1, const RationalCur
   return prrs_planes<K, S>(p1.taylor<K>(u), p2.taylor<K>(u), p3.taylor<K>(u));
 }
 
-// For these planes det = 4 |n|^2 and the relative determinant is the sine
-// of the angle at p1: small means the three points are (nearly) collinear.
+// The sine of the smallest angle of the triangle p1 p2 p3, from the planes'
+// normals n = e2 x e3, 2 e2, 2 e3: |e2 x e3| over the product of the two
+// longest sides. The circle through the points is well determined only if
+// every angle is: the sine at p1 alone (the planes' relative determinant)
+// stays large when p2 nears p1, where the circle is rounding noise.
+template <class S>
+double prrs_smallest_sine(const ThreePlanes<S>& T) {
+  Vec3d n[3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) n[i][j] = value_of(T.n[i][j]);
+  double side[3] = {0.5 * n[1].stableNorm(), 0.5 * n[2].stableNorm(),
+                    0.5 * (n[1] - n[2]).stableNorm()};
+  std::sort(side, side + 3);
+  const double den = side[1] * side[2];
+  if (!(den > 0)) return 0.0;
+  return n[0].stableNorm() / den;
+}
+
+// Small means the three points are (nearly) collinear or two (nearly)
+// coincide.
 template <class S>
 Status check_prrs_planes(const ThreePlanes<S>& T) {
   if (!planes_finite(T)) return Status::numerical_overflow;  // a pole
-  if (!(relative_determinant(T) > kDependentPlanesTol)) return Status::collinear_points;
+  if (!(prrs_smallest_sine(T) > kDependentPlanesTol)) return Status::collinear_points;
   return Status::ok;
 }
 

@@ -553,6 +553,27 @@ void for_each_prrs_input(const ParabolicLines& A, Visit visit) {
         }
 }
 
+// The input curves are lines c_j(u) = P_j + u d_j. Where two of them meet,
+// at a u inside the domain, the PRCS/PRRS points coincide: the frame there
+// is 0/0 (a base point of the map) and the circle of that pencil plane is
+// lost. u* minimizes |dP + u dd|; they meet if the gap is rounding of the
+// terms (relative to their size, so that far from the origin and at any
+// scale the decision is the same).
+bool inputs_meet_in(const PencilInput& I, double u0, double u1) {
+  for (int i = 0; i < I.count; ++i)
+    for (int j = i + 1; j < I.count; ++j) {
+      const Line &a = I.curves[i], &b = I.curves[j];
+      const Vec3d dP = a.P - b.P, dd = a.d - b.d;
+      const double dd2 = dd.squaredNorm();
+      const double u = dd2 > 0 ? -dP.dot(dd) / dd2 : u0;  // dd = 0: parallel, any u
+      const double slack = 1e-9 * (u1 - u0);
+      if (!(u >= u0 - slack && u <= u1 + slack)) continue;
+      const double size = a.P.norm() + b.P.norm() + std::abs(u) * (a.d.norm() + b.d.norm());
+      if ((dP + u * dd).norm() <= 1e-9 * size) return true;
+    }
+  return false;
+}
+
 Status first_input(const ParabolicLines& A, bool canal, PencilInput& out) {
   Status st = Status::too_few_lines;
   auto take = [&](int a, const int* used, int count) {
@@ -591,6 +612,8 @@ Status parameterize(const Darboux& D, bool canal, double u0, double u1, Surface&
   auto attempt = [&](int a, const int* used, int count) {
     PencilInput I;
     Status st = build_input(A, a, used, count, I);
+    if (st == Status::ok && inputs_meet_in(I, u0, u1))
+      st = canal ? Status::dependent_planes : Status::collinear_points;
     RationalCurve c[3];
     for (int j = 0; j < I.count && st == Status::ok; ++j)
       st = make_line(I.curves[j].P, I.curves[j].d, c[j]);

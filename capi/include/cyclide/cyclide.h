@@ -456,7 +456,11 @@ CYC_API int cyc_pencil_circle(cyc_context* ctx, const cyc_darboux* d, const cyc_
  *  (CYC_SURFACE_PRRS, Prop. 5: a line and three lines outside its plane,
  *  not all coplanar). The circles u = const lie in the pencil of planes
  *  through one line of the cyclide; CYC_E_TOO_FEW_LINES if the lines are
- *  missing. The linearly parameterized input lines are written to
+ *  missing. Of the choices of axis and input lines, the first is taken
+ *  whose input lines do not meet at a u in [u0, u1] (the pencil plane
+ *  there would have no circle) and whose surface is regular there;
+ *  CYC_E_COLLINEAR_POINTS (PRRS) or CYC_E_DEPENDENT_PLANES (PRCS) when no
+ *  choice is. The linearly parameterized input lines are written to
  *  `inputs` (3 entries, may be NULL; the third is unused for PRCS).
  *  Allocates the surface (creation tier). */
 CYC_API int cyc_parabolic_parameterize(cyc_context* ctx, const cyc_darboux* d, int kind,
